@@ -1,0 +1,131 @@
+// glint: the command-line front end of libglint. It parses arguments, loads a scene,
+// renders it and writes the image; everything else lives in the library.
+
+#include "progress_bar.h"
+
+#include "glint/image/image_io.h"
+#include "glint/integrators/whitted_integrator.h"
+#include "glint/io/scene_file.h"
+#include "glint/scene/default_scene.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <unistd.h>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+struct RenderOptions {
+    std::string scene_path;
+    std::string output;
+    std::optional<uint32_t> width, height, spp, depth, threads;
+    std::optional<uint64_t> seed;
+    std::optional<std::string> filter;
+    float exposure = 0.0f;
+    bool quiet = false;
+};
+
+/// Samples per pixel must be N² for N×N stratification.
+uint32_t samples_per_axis(uint32_t spp) {
+    const auto n = static_cast<uint32_t>(std::lround(std::sqrt(double(spp))));
+    if (spp == 0 || n * n != spp)
+        throw std::invalid_argument(fmt::format(
+            "--spp {} is not a square number: Glint takes N×N stratified samples (1, 4, 9, 16, 25, ...)", spp));
+    return n;
+}
+
+int run_render(const RenderOptions& opt) {
+    const auto load_start = Clock::now();
+    glint::LoadedScene loaded;
+    if (opt.scene_path.empty()) {
+        loaded.scene = glint::make_spheres_scene();
+        loaded.settings.samples_per_axis = 2;
+    } else {
+        loaded = glint::load_scene_file(opt.scene_path);
+    }
+    for (const std::string& w : loaded.warnings) fmt::print(stderr, "warning: {}\n", w);
+
+    glint::RenderSettings& s = loaded.settings;
+    if (opt.width) s.width = *opt.width;
+    if (opt.height) s.height = *opt.height;
+    if (opt.spp) s.samples_per_axis = samples_per_axis(*opt.spp);
+    if (opt.depth) s.max_depth = *opt.depth;
+    if (opt.threads) s.threads = *opt.threads;
+    if (opt.seed) s.seed = *opt.seed;
+    if (opt.filter) s.filter = *opt.filter == "tent" ? glint::PixelFilter::Tent : glint::PixelFilter::Box;
+    if (s.width == 0 || s.height == 0) throw std::invalid_argument("image width and height must be at least 1");
+
+    std::string output = opt.output;
+    if (output.empty())
+        output = opt.scene_path.empty() ? "spheres.png"
+                                        : std::filesystem::path(opt.scene_path).stem().string() + ".png";
+    if (!glint::is_supported_output(output))
+        throw glint::ImageError(output + ": unknown image extension (expected .exr, .hdr, .pfm, .png, .jpg or .tif)");
+    const double load_seconds = seconds_since(load_start);
+
+    const auto build_start = Clock::now();
+    loaded.scene.prepare();
+    const double build_seconds = seconds_since(build_start);
+
+    glint::Film film(s.width, s.height);
+    glint::WhittedIntegrator integrator(s.max_depth);
+    glint::app::ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
+    const glint::RenderStats stats =
+        integrator.render(loaded.scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
+    bar.finish();
+
+    glint::WriteOptions write_options;
+    write_options.exposure = opt.exposure;
+    glint::write_image(output, film.to_image(), write_options);
+
+    const double mrays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds * 1e-6 : 0.0;
+    fmt::print("{}x{}, {} spp: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}\n",
+               s.width, s.height, s.samples_per_axis * s.samples_per_axis, load_seconds, build_seconds, stats.seconds,
+               double(stats.rays) * 1e-6, mrays_per_second, output);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Glint: a classic Whitted ray tracer"};
+    app.require_subcommand(1);
+
+    RenderOptions render;
+    CLI::App* render_cmd = app.add_subcommand("render", "Render a scene file (or the built-in spheres scene) to an image");
+    render_cmd->add_option("scene", render.scene_path, "Scene file (.toml); none renders the built-in scene")
+        ->check(CLI::ExistingFile);
+    render_cmd->add_option("-o,--output", render.output,
+                           "Output image: .exr/.hdr/.pfm (linear) or .png/.jpg/.tif (sRGB); default <scene>.png");
+    render_cmd->add_option("--width", render.width, "Image width in pixels")->check(CLI::PositiveNumber);
+    render_cmd->add_option("--height", render.height, "Image height in pixels")->check(CLI::PositiveNumber);
+    render_cmd->add_option("--spp", render.spp, "Samples per pixel, a square N² (N×N stratified)")
+        ->check(CLI::PositiveNumber);
+    render_cmd->add_option("--depth", render.depth, "Maximum reflection/refraction depth");
+    render_cmd->add_option("--threads", render.threads, "Worker threads (0 = all cores)");
+    render_cmd->add_option("--seed", render.seed, "Random seed");
+    render_cmd->add_option("--filter", render.filter, "Pixel filter")->check(CLI::IsMember({"box", "tent"}));
+    render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG/JPEG/TIFF output");
+    render_cmd->add_flag("-q,--quiet", render.quiet, "No progress bar");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+
+    try {
+        if (*render_cmd) return run_render(render);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "glint: error: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,48 @@
+#pragma once
+/// \file Hit records: a cheap one for traversal, a full one for shading.
+///
+/// Traversal only keeps t, which primitive, and two parameters (barycentrics for
+/// triangles). The full `SurfaceInteraction` is computed once, for the closest hit
+/// (the pbrt-v4 / Mitsuba 3 two-phase split).
+
+#include "glint/math/constants.h"
+#include "glint/math/vec2.h"
+#include "glint/math/vec3.h"
+
+#include <array>
+#include <cstdint>
+
+namespace glint {
+
+inline constexpr uint32_t kNoHit = 0xffffffffu;
+
+struct Hit {
+    float t = kInfinity;
+    /// Index of the scene object that was hit (kNoHit if none).
+    uint32_t object = kNoHit;
+    /// Primitive inside the object: triangle index, heightfield cell, box face...
+    uint32_t primitive = 0;
+    /// Shape-specific parameters; for triangles the barycentric weights of v1 and v2.
+    float u = 0.0f, v = 0.0f;
+
+    [[nodiscard]] bool found() const { return object != kNoHit; }
+};
+
+struct SurfaceInteraction {
+    Vec3 p;
+    /// Unit normal of the true surface, on the side the shape calls outside
+    /// (for triangles: the side from which the vertices appear counter-clockwise).
+    Vec3 geometric_normal;
+    /// Unit interpolated normal, flipped if needed to lie on geometric_normal's side.
+    Vec3 shading_normal;
+    Vec2 uv;
+    /// True if the ray arrived from the side geometric_normal points to.
+    bool front_face = true;
+    /// Scene material index; with per-vertex materials, the three corners' materials
+    /// and their barycentric weights (handout §6.1.1).
+    std::array<uint32_t, 3> materials{0, 0, 0};
+    std::array<float, 3> material_weights{1.0f, 0.0f, 0.0f};
+    bool blends_materials = false;
+};
+
+}  // namespace glint

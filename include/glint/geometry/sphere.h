@@ -1,0 +1,33 @@
+#pragma once
+/// \file Sphere.
+
+#include "glint/geometry/shape.h"
+
+namespace glint {
+
+/// A sphere of a given centre and radius. uv: u = azimuth φ/2π about +y from +x, v = polar
+/// angle θ/π from +y (v = 0 at the top).
+class Sphere final : public Shape {
+public:
+    /// Throws std::invalid_argument for a radius that is not finite and positive.
+    Sphere(const Vec3& center, float radius);
+
+    [[nodiscard]] Bounds3 bounds() const override;
+    bool intersect(Ray& ray, Hit& hit) const override;
+    [[nodiscard]] bool occluded(const Ray& ray) const override;
+    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    [[nodiscard]] std::size_t memory_bytes() const override { return sizeof(*this); }
+    [[nodiscard]] std::string_view type_name() const override { return "sphere"; }
+
+    [[nodiscard]] const Vec3& center() const { return center_; }
+    [[nodiscard]] float radius() const { return radius_; }
+
+private:
+    /// Both roots of |o + t·d - c|² = r², ordered; false if the ray misses.
+    bool roots(const Ray& ray, float& t_near, float& t_far) const;
+
+    Vec3 center_;
+    float radius_;
+};
+
+}  // namespace glint

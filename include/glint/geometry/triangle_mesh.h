@@ -1,0 +1,65 @@
+#pragma once
+/// \file Indexed triangle mesh: flat arrays plus its own BVH.
+
+#include "glint/accel/bvh.h"
+#include "glint/geometry/shape.h"
+#include "glint/materials/texture.h"
+#include "glint/math/vec2.h"
+
+#include <string>
+#include <vector>
+
+namespace glint {
+
+/// The data of a triangle mesh, as loaders produce it. Optional arrays are either empty
+/// or have one entry per vertex.
+struct MeshData {
+    std::vector<Vec3> positions;
+    /// Three vertex indices per triangle, counter-clockwise seen from the front.
+    std::vector<uint32_t> indices;
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uvs;
+    /// Per-vertex scene material indices, blended with barycentrics at a hit (handout §6.1.1).
+    std::vector<uint32_t> vertex_materials;
+};
+
+/// A mesh is stored once and may be placed by several scene objects (instancing).
+/// Zero-area triangles are kept but never reported as hits.
+class TriangleMesh final : public Shape {
+public:
+    /// Validates the data; throws std::invalid_argument naming the problem (index out of
+    /// range, array size mismatch, non-finite position, no triangles).
+    explicit TriangleMesh(MeshData data, std::string name = {});
+
+    [[nodiscard]] Bounds3 bounds() const override { return bounds_; }
+    bool intersect(Ray& ray, Hit& hit) const override;
+    [[nodiscard]] bool occluded(const Ray& ray) const override;
+    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    void prepare() override;
+    [[nodiscard]] std::size_t primitive_count() const override { return triangle_count(); }
+    [[nodiscard]] std::size_t memory_bytes() const override;
+    [[nodiscard]] std::string_view type_name() const override { return "mesh"; }
+
+    [[nodiscard]] std::size_t triangle_count() const { return data_.indices.size() / 3; }
+    [[nodiscard]] const MeshData& data() const { return data_; }
+    [[nodiscard]] const std::string& name() const { return name_; }
+    [[nodiscard]] const Bvh& bvh() const { return bvh_; }
+
+    /// Cut-out mask (glTF alphaMode MASK): hits where `alpha->alpha(uv) < cutoff` are
+    /// skipped by every query, shadow rays too. Needs uvs; null removes the mask.
+    void set_alpha_mask(const Texture* alpha, float cutoff) { alpha_mask_ = alpha; alpha_cutoff_ = cutoff; }
+    [[nodiscard]] const Texture* alpha_mask() const { return alpha_mask_; }
+
+    /// Test one triangle (the BLAS leaf and the brute-force reference share it).
+    bool intersect_triangle(uint32_t triangle, Ray& ray, Hit& hit) const;
+
+private:
+    MeshData data_;
+    std::string name_;
+    Bounds3 bounds_;
+    Bvh bvh_;
+    const Texture* alpha_mask_ = nullptr;
+    float alpha_cutoff_ = 0.5f;
+};
+
+}  // namespace glint

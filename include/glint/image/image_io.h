@@ -1,0 +1,41 @@
+#pragma once
+/// \file Reading and writing images through OpenImageIO.
+
+#include "glint/image/image.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace glint {
+
+class ImageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// How the stored values of an image file relate to linear light.
+enum class ColorEncoding {
+    /// Colour data: 8/16-bit integer files are sRGB-encoded and decoded to linear;
+    /// float files (EXR, HDR, PFM) are already linear.
+    Color,
+    /// Non-colour data (alpha, roughness, heights): read the values as they are.
+    Data,
+};
+
+/// Read any format OpenImageIO knows into linear floats. Throws ImageError naming the file.
+[[nodiscard]] Image read_image(const std::filesystem::path& path, ColorEncoding encoding = ColorEncoding::Color);
+
+struct WriteOptions {
+    /// Exposure in stops applied before display encoding (PNG, JPEG, TIFF 8-bit): value·2^exposure.
+    float exposure = 0.0f;
+};
+
+/// Write by extension: .exr, .hdr, .pfm keep linear floats; .png, .jpg, .tif, .bmp get
+/// exposure and sRGB encoding in 8 bits. The file is written under a temporary name in the
+/// same folder and renamed, so a failure never leaves a partial image. Throws ImageError.
+void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options = {});
+
+/// True if write_image knows the extension of `path`.
+[[nodiscard]] bool is_supported_output(const std::filesystem::path& path);
+
+}  // namespace glint

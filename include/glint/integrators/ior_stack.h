@@ -1,0 +1,42 @@
+#pragma once
+/// \file The stack of indices of refraction a ray is inside (handout §5.4.1).
+
+#include <array>
+#include <cstdint>
+
+namespace glint {
+
+/// Tracks nested dielectrics. Entering a dielectric pushes its material; leaving removes
+/// the innermost entry of that material. If a boundary was missed (leaving a material the
+/// stack does not hold, or a stack that overflowed) the stack stays valid: leaving an
+/// unknown material keeps the current medium, and overflow drops the outermost entry.
+class IorStack {
+public:
+    static constexpr int kCapacity = 8;
+
+    explicit IorStack(float ambient_ior = 1.0f) : ambient_(ambient_ior) {}
+
+    /// Index of refraction of the medium the ray is currently in.
+    [[nodiscard]] float current() const { return size_ == 0 ? ambient_ : entries_[size_ - 1].ior; }
+    /// Index on the far side when leaving `material` (the medium that encloses it).
+    [[nodiscard]] float outside_of(uint32_t material) const;
+    /// Stack after entering `material` with index `ior`.
+    [[nodiscard]] IorStack entered(uint32_t material, float ior) const;
+    /// Stack after leaving `material`.
+    [[nodiscard]] IorStack left(uint32_t material) const;
+    [[nodiscard]] int depth() const { return size_; }
+
+private:
+    struct Entry {
+        uint32_t material;
+        float ior;
+    };
+    /// Position of the innermost entry of `material`, or -1.
+    [[nodiscard]] int find(uint32_t material) const;
+
+    std::array<Entry, kCapacity> entries_{};
+    int size_ = 0;
+    float ambient_;
+};
+
+}  // namespace glint

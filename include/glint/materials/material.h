@@ -1,0 +1,54 @@
+#pragma once
+/// \file The Whitted material: one parameter set that covers both assignments' models.
+///
+/// Shading (docs/shading.md has the full derivation):
+///   L = Le + (1 - t)·[ tex·(ka·La + Σ_i v_i·kd·E_i·max(N·L_i, 0)) + Σ_i v_i·ks·(N·H_i)^s·E_i·max(N·L_i, 0) + kr·L_reflect ]
+///          + t·[ F·L_reflect + (1 - F)·L_refract ]
+/// t = transparency, F = Schlick's Fresnel term for the interface, v_i = visibility of light i.
+/// The handout's opaque material is t = 0 with kr = its "specular" colour; its dielectric
+/// is t = 1. The seminar's reflectivity r and transparency τ are kr = r and t = τ.
+
+#include "glint/materials/texture.h"
+#include "glint/math/color.h"
+
+#include <string>
+
+namespace glint {
+
+struct Material {
+    std::string name;
+    /// ka: reflectance of the scene's ambient light.
+    Color ambient{0.0f};
+    /// kd: Lambertian reflectance of direct light.
+    Color diffuse{0.8f};
+    /// Multiplies the ambient + diffuse direct term (the handout's t_p); null for none.
+    const Texture* texture = nullptr;
+    /// ks and s of the optional Blinn-Phong highlight ks·(N·H)^s; black for none.
+    Color specular{0.0f};
+    float shininess = 32.0f;
+    /// kr: weight of the recursive mirror reflection.
+    Color reflectivity{0.0f};
+    /// If true, the mirror weight is Schlick's F with F0 = kr (a metal: tinted reflection
+    /// that whitens at grazing angles) instead of the constant kr.
+    bool fresnel_mirror = false;
+    /// t: weight of the dielectric part (Fresnel-mixed reflection and refraction). 0 = opaque.
+    float transparency = 0.0f;
+    /// Index of refraction of the dielectric.
+    float ior = 1.5f;
+    /// Le: emitted radiance (seen by rays; does not light other surfaces).
+    Color emission{0.0f};
+    const Texture* emission_texture = nullptr;
+    /// Cut-out mask: hits where texture alpha < alpha_cutoff are skipped, shadow rays too.
+    const Texture* alpha_texture = nullptr;
+    float alpha_cutoff = 0.5f;
+    /// Microfacet roughness, recorded from assets for the glossy reflection to come.
+    float roughness = 0.0f;
+
+    [[nodiscard]] bool is_dielectric() const { return transparency > 0.0f; }
+};
+
+/// Barycentric blend of three materials' numeric parameters (per-vertex materials,
+/// handout §6.1.1). Textures and flags come from the corner with the largest weight.
+[[nodiscard]] Material blend(const Material& a, const Material& b, const Material& c, float wa, float wb, float wc);
+
+}  // namespace glint

@@ -1,0 +1,24 @@
+#pragma once
+/// \file A ray p(t) = origin + t·direction, valid for t in [tmin, tmax].
+
+#include "glint/math/constants.h"
+#include "glint/math/vec3.h"
+
+namespace glint {
+
+struct Ray {
+    Vec3 origin;
+    /// Not necessarily unit length: a ray carried into an object's space keeps its t.
+    Vec3 direction;
+    float tmin = 0.0f;
+    /// Closest-hit queries shrink tmax as they find closer hits.
+    float tmax = kInfinity;
+
+    constexpr Ray() = default;
+    constexpr Ray(const Vec3& o, const Vec3& d, float t0 = 0.0f, float t1 = kInfinity)
+        : origin(o), direction(d), tmin(t0), tmax(t1) {}
+
+    [[nodiscard]] constexpr Vec3 at(float t) const { return origin + direction * t; }
+};
+
+}  // namespace glint

@@ -1,0 +1,48 @@
+#pragma once
+/// \file Pinhole (perspective) and orthographic cameras.
+
+#include "glint/math/ray.h"
+#include "glint/math/vec3.h"
+
+namespace glint {
+
+enum class Projection { Perspective, Orthographic };
+
+/// Built from look-at parameters, as the handout's image plane (§4.2): the view direction
+/// d_c, the image plane's axes I_x = d_c × u_c and I_y = u_c (u_c made orthogonal to d_c),
+/// half-height tan(θ/2) at distance 1 and half-width tan(θ/2)·aspect.
+class Camera {
+public:
+    /// The default: the seminar's spheres camera.
+    Camera();
+    /// `vertical_fov` in degrees, in (0, 180).
+    [[nodiscard]] static Camera perspective(const Vec3& eye, const Vec3& target, const Vec3& up, float vertical_fov);
+    /// `view_height`: height of the visible region in world units.
+    [[nodiscard]] static Camera orthographic(const Vec3& eye, const Vec3& target, const Vec3& up, float view_height);
+
+    /// Aspect ratio width/height, set from the image size before rendering.
+    void set_aspect(float aspect) { aspect_ = aspect; }
+
+    /// Ray through the film position (x, y) in pixels, (0, 0) = top-left corner of the
+    /// image, (width, height) = bottom-right. Directions are unit length.
+    [[nodiscard]] Ray generate_ray(float x, float y, int width, int height) const;
+
+    [[nodiscard]] Projection projection() const { return projection_; }
+    [[nodiscard]] const Vec3& eye() const { return eye_; }
+    [[nodiscard]] const Vec3& forward() const { return forward_; }
+    [[nodiscard]] const Vec3& up() const { return up_; }
+    [[nodiscard]] const Vec3& right() const { return right_; }
+    [[nodiscard]] float vertical_fov() const { return vertical_fov_; }
+    [[nodiscard]] float view_height() const { return view_height_; }
+
+private:
+    Camera(Projection projection, const Vec3& eye, const Vec3& target, const Vec3& up);
+
+    Projection projection_ = Projection::Perspective;
+    Vec3 eye_, forward_, right_, up_;
+    float vertical_fov_ = 52.0f;  // degrees
+    float view_height_ = 2.0f;
+    float aspect_ = 1.0f;
+};
+
+}  // namespace glint

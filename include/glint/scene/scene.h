@@ -1,0 +1,115 @@
+#pragma once
+/// \file The scene: objects (shapes placed by transforms), materials, lights, camera,
+/// background, and the top-level acceleration structure built by prepare().
+
+#include "glint/accel/bvh.h"
+#include "glint/geometry/shape.h"
+#include "glint/lights/light.h"
+#include "glint/materials/material.h"
+#include "glint/materials/texture.h"
+#include "glint/math/transform.h"
+#include "glint/scene/background.h"
+#include "glint/scene/camera.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glint {
+
+/// Whether dielectrics (transparency > 0) block shadow rays.
+enum class DielectricShadows {
+    /// The handout's rule: shadow rays pass through dielectrics as if they were absent.
+    None,
+    /// Dielectrics cast shadows like opaque objects.
+    Opaque,
+};
+
+/// One placement of a shape in the world.
+struct SceneObject {
+    std::shared_ptr<Shape> shape;
+    Transform world_from_object;
+    /// Its inverse, kept so that every ray query need not invert.
+    Transform object_from_world;
+    bool has_transform = false;
+    uint32_t material = 0;
+    std::string name;
+};
+
+/// Counts for `glint info` and the final render line.
+struct SceneStatistics {
+    std::size_t objects = 0;
+    std::size_t unique_shapes = 0;
+    std::size_t unique_triangles = 0;     ///< triangles stored
+    std::size_t instanced_triangles = 0;  ///< triangles as placed in the world
+    std::size_t memory_bytes = 0;         ///< shapes + acceleration structures
+};
+
+class Scene {
+public:
+    Scene();
+    Scene(Scene&&) noexcept;
+    Scene& operator=(Scene&&) noexcept;
+    ~Scene();
+
+    Camera camera;
+    Background background;
+    /// La: the ambient light colour, times each material's ka.
+    Color ambient_light{0.0f};
+    /// Index of refraction of the space between objects (the bottom of the IOR stack).
+    float ambient_ior = 1.0f;
+    DielectricShadows dielectric_shadows = DielectricShadows::None;
+
+    /// Returns the new material's index.
+    uint32_t add_material(Material material);
+    /// Index of the material called `name`, if any.
+    [[nodiscard]] std::optional<uint32_t> find_material(std::string_view name) const;
+    [[nodiscard]] const Material& material(uint32_t index) const { return materials_[index]; }
+    [[nodiscard]] const std::vector<Material>& materials() const { return materials_; }
+
+    /// The scene owns its textures; materials point at them.
+    const Texture* add_texture(std::unique_ptr<Texture> texture);
+    [[nodiscard]] std::size_t texture_count() const { return textures_.size(); }
+
+    void add_light(std::unique_ptr<Light> light);
+    [[nodiscard]] const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
+
+    /// Place `shape` with `material`; several objects may share one shape (instancing).
+    /// Returns the object's index. Invalidates prepare().
+    uint32_t add_object(std::shared_ptr<Shape> shape, uint32_t material,
+                        const std::optional<Transform>& world_from_object = std::nullopt, std::string name = {});
+    [[nodiscard]] const std::vector<SceneObject>& objects() const { return objects_; }
+
+    /// Build every shape's own structure (in parallel) and the top-level BVH over objects.
+    /// Must be called after the last change and before any query.
+    void prepare();
+    [[nodiscard]] bool prepared() const { return prepared_; }
+
+    /// Closest hit in world space; fills hit.object too.
+    bool intersect(Ray& ray, Hit& hit) const;
+    /// Any hit that blocks light (dielectrics per `dielectric_shadows`, alpha cut-outs skipped).
+    [[nodiscard]] bool occluded(const Ray& ray) const;
+    /// World-space surface description of a hit returned by intersect().
+    [[nodiscard]] SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
+
+    /// World bounds of all objects (valid after prepare()).
+    [[nodiscard]] Bounds3 bounds() const { return top_level_.bounds(); }
+    [[nodiscard]] SceneStatistics statistics() const;
+
+private:
+    bool intersect_object(uint32_t object, Ray& ray, Hit& hit) const;
+    bool occluded_by_object(uint32_t object, const Ray& ray) const;
+
+    std::vector<Material> materials_;
+    std::vector<std::unique_ptr<Texture>> textures_;
+    std::vector<std::unique_ptr<Light>> lights_;
+    std::vector<SceneObject> objects_;
+    /// Per object: does it block shadow rays (derived in prepare()).
+    std::vector<uint8_t> casts_shadows_;
+    Bvh top_level_;
+    bool prepared_ = false;
+};
+
+}  // namespace glint

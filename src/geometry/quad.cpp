@@ -1,0 +1,64 @@
+#include "glint/geometry/quad.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace glint {
+
+Quad::Quad(const Vec3& corner, const Vec3& edge_u, const Vec3& edge_v)
+    : corner_(corner), edge_u_(edge_u), edge_v_(edge_v) {
+    const Vec3 n = cross(edge_u, edge_v);
+    if (!(length(n) > 0.0f) || !is_finite(n) || !is_finite(corner))
+        throw std::invalid_argument("quad edges must be finite, non-zero and not parallel");
+    normal_ = normalize(n);
+}
+
+Bounds3 Quad::bounds() const {
+    Bounds3 b;
+    b.extend(corner_);
+    b.extend(corner_ + edge_u_);
+    b.extend(corner_ + edge_v_);
+    b.extend(corner_ + edge_u_ + edge_v_);
+    return b;
+}
+
+bool Quad::hit_parameters(const Ray& ray, float& t, float& a, float& b) const {
+    // Plane hit, then the coordinates (a, b) of the point in the (edge_u, edge_v) basis
+    // from the dual basis: a = (w × edge_v)·n / (edge_u × edge_v)·n, likewise for b.
+    const float denom = dot(normal_, ray.direction);
+    if (denom == 0.0f) return false;
+    t = dot(normal_, corner_ - ray.origin) / denom;
+    if (!(t > ray.tmin && t < ray.tmax)) return false;
+    const Vec3 w = ray.at(t) - corner_;
+    const Vec3 n = cross(edge_u_, edge_v_);
+    const float inv = 1.0f / dot(n, n);
+    a = dot(cross(w, edge_v_), n) * inv;
+    b = dot(cross(edge_u_, w), n) * inv;
+    return a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f;
+}
+
+bool Quad::intersect(Ray& ray, Hit& hit) const {
+    float t, a, b;
+    if (!hit_parameters(ray, t, a, b)) return false;
+    ray.tmax = t;
+    hit.t = t;
+    hit.primitive = 0;
+    hit.u = a;
+    hit.v = b;
+    return true;
+}
+
+bool Quad::occluded(const Ray& ray) const {
+    float t, a, b;
+    return hit_parameters(ray, t, a, b);
+}
+
+void Quad::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
+    si.p = corner_ + edge_u_ * hit.u + edge_v_ * hit.v;
+    si.geometric_normal = normal_;
+    si.shading_normal = normal_;
+    si.uv = Vec2(hit.u, hit.v);
+    si.front_face = dot(ray.direction, normal_) < 0.0f;
+}
+
+}  // namespace glint

@@ -1,0 +1,120 @@
+#include "glint/geometry/triangle_mesh.h"
+
+#include "glint/geometry/triangle.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace glint {
+
+namespace {
+
+std::string mesh_label(const std::string& name) { return name.empty() ? "mesh" : "mesh '" + name + "'"; }
+
+}  // namespace
+
+TriangleMesh::TriangleMesh(MeshData data, std::string name) : data_(std::move(data)), name_(std::move(name)) {
+    const std::string label = mesh_label(name_);
+    const size_t vertex_count = data_.positions.size();
+    if (data_.indices.empty()) throw std::invalid_argument(label + " has no triangles");
+    if (data_.indices.size() % 3 != 0)
+        throw std::invalid_argument(label + ": index count " + std::to_string(data_.indices.size()) +
+                                    " is not a multiple of 3");
+    for (size_t i = 0; i < data_.indices.size(); ++i)
+        if (data_.indices[i] >= vertex_count)
+            throw std::invalid_argument(label + ": triangle " + std::to_string(i / 3) + " uses vertex " +
+                                        std::to_string(data_.indices[i]) + " but there are only " +
+                                        std::to_string(vertex_count) + " vertices");
+    for (size_t i = 0; i < vertex_count; ++i)
+        if (!is_finite(data_.positions[i]))
+            throw std::invalid_argument(label + ": vertex " + std::to_string(i) + " has a non-finite position");
+    auto check_size = [&](size_t size, const char* what) {
+        if (size != 0 && size != vertex_count)
+            throw std::invalid_argument(label + ": " + std::to_string(size) + " " + what + " for " +
+                                        std::to_string(vertex_count) + " vertices");
+    };
+    check_size(data_.normals.size(), "normals");
+    check_size(data_.uvs.size(), "texture coordinates");
+    check_size(data_.vertex_materials.size(), "vertex materials");
+    for (auto& n : data_.normals) {
+        const float len = length(n);
+        n = (len > 0.0f && std::isfinite(len)) ? n / len : Vec3(0.0f);
+    }
+    for (const Vec3& p : data_.positions) bounds_.extend(p);
+}
+
+void TriangleMesh::prepare() {
+    if (!bvh_.nodes().empty()) return;
+    std::vector<Bounds3> boxes(triangle_count());
+    for (size_t t = 0; t < boxes.size(); ++t) {
+        for (int k = 0; k < 3; ++k) boxes[t].extend(data_.positions[data_.indices[3 * t + k]]);
+    }
+    bvh_.build(boxes);
+}
+
+bool TriangleMesh::intersect_triangle(uint32_t triangle, Ray& ray, Hit& hit) const {
+    const uint32_t* idx = &data_.indices[3 * size_t(triangle)];
+    TriangleHit th;
+    if (!glint::intersect_triangle(ray, data_.positions[idx[0]], data_.positions[idx[1]], data_.positions[idx[2]], th))
+        return false;
+    if (alpha_mask_ && !data_.uvs.empty()) {
+        const float b0 = 1.0f - th.v - th.w;
+        const Vec2 uv = data_.uvs[idx[0]] * b0 + data_.uvs[idx[1]] * th.v + data_.uvs[idx[2]] * th.w;
+        if (alpha_mask_->alpha(uv) < alpha_cutoff_) return false;
+    }
+    ray.tmax = th.t;
+    hit.t = th.t;
+    hit.primitive = triangle;
+    hit.u = th.v;
+    hit.v = th.w;
+    return true;
+}
+
+bool TriangleMesh::intersect(Ray& ray, Hit& hit) const {
+    return bvh_.traverse<false>(ray, [&](uint32_t tri, Ray& r) { return intersect_triangle(tri, r, hit); });
+}
+
+bool TriangleMesh::occluded(const Ray& ray) const {
+    Ray r = ray;
+    Hit scratch;
+    return bvh_.traverse<true>(r, [&](uint32_t tri, Ray& rr) { return intersect_triangle(tri, rr, scratch); });
+}
+
+void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
+    const uint32_t* idx = &data_.indices[3 * size_t(hit.primitive)];
+    const float b1 = hit.u, b2 = hit.v, b0 = 1.0f - b1 - b2;
+    const Vec3& p0 = data_.positions[idx[0]];
+    const Vec3& p1 = data_.positions[idx[1]];
+    const Vec3& p2 = data_.positions[idx[2]];
+    si.p = p0 * b0 + p1 * b1 + p2 * b2;
+    const Vec3 ng = normalize(cross(p1 - p0, p2 - p0));
+    si.geometric_normal = ng;
+    si.front_face = dot(ray.direction, ng) < 0.0f;
+    Vec3 ns = ng;
+    if (!data_.normals.empty()) {
+        const Vec3 interpolated =
+            data_.normals[idx[0]] * b0 + data_.normals[idx[1]] * b1 + data_.normals[idx[2]] * b2;
+        const float len = length(interpolated);
+        if (len > 0.0f) ns = face_forward(interpolated / len, ng);
+    }
+    si.shading_normal = ns;
+    if (!data_.uvs.empty()) {
+        si.uv = data_.uvs[idx[0]] * b0 + data_.uvs[idx[1]] * b1 + data_.uvs[idx[2]] * b2;
+    } else {
+        si.uv = Vec2(b1, b2);
+    }
+    if (!data_.vertex_materials.empty()) {
+        si.blends_materials = true;
+        si.materials = {data_.vertex_materials[idx[0]], data_.vertex_materials[idx[1]], data_.vertex_materials[idx[2]]};
+        si.material_weights = {b0, b1, b2};
+    }
+}
+
+std::size_t TriangleMesh::memory_bytes() const {
+    return data_.positions.size() * sizeof(Vec3) + data_.indices.size() * sizeof(uint32_t) +
+           data_.normals.size() * sizeof(Vec3) + data_.uvs.size() * sizeof(Vec2) +
+           data_.vertex_materials.size() * sizeof(uint32_t) + bvh_.memory_bytes();
+}
+
+}  // namespace glint

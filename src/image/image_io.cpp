@@ -1,0 +1,114 @@
+#include "glint/image/image_io.h"
+
+#include "glint/math/color.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+
+namespace glint {
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+bool is_float_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
+
+constexpr std::array<const char*, 8> kOutputExtensions = {".exr", ".hdr", ".pfm", ".png",
+                                                          ".jpg", ".jpeg", ".tif", ".tiff"};
+
+}  // namespace
+
+Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
+    if (!std::filesystem::exists(path)) throw ImageError(path.string() + ": no such image file");
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = input->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        throw ImageError(path.string() + ": image has no pixels");
+    Image image(spec.width, spec.height, spec.nchannels);
+    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+        throw ImageError(path.string() + ": cannot read image: " + input->geterror());
+    input->close();
+
+    // Integer files hold display-encoded colour unless they say otherwise; float files are linear.
+    const bool integer_data = !(spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                                spec.format.basetype == OIIO::TypeDesc::HALF ||
+                                spec.format.basetype == OIIO::TypeDesc::DOUBLE);
+    const std::string color_space = spec.get_string_attribute("oiio:ColorSpace");
+    const bool linear_tagged = color_space == "Linear" || color_space == "linear";
+    if (encoding == ColorEncoding::Color && integer_data && !linear_tagged) {
+        // Alpha is coverage, never sRGB-encoded: grey+alpha and RGBA files keep their last channel.
+        int alpha = spec.alpha_channel;
+        if (alpha < 0 && (spec.nchannels == 2 || spec.nchannels == 4)) alpha = spec.nchannels - 1;
+        const auto stride = std::size_t(spec.nchannels);
+        for (std::size_t i = 0; i < image.pixels.size(); i += stride)
+            for (int c = 0; c < std::min(spec.nchannels, 3); ++c)
+                if (c != alpha) image.pixels[i + c] = srgb_to_linear(image.pixels[i + c]);
+    }
+    return image;
+}
+
+bool is_supported_output(const std::filesystem::path& path) {
+    const std::string ext = lower_extension(path);
+    return std::find(kOutputExtensions.begin(), kOutputExtensions.end(), ext) != kOutputExtensions.end();
+}
+
+void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options) {
+    const std::string ext = lower_extension(path);
+    if (!is_supported_output(path))
+        throw ImageError(path.string() + ": unknown image extension '" + ext +
+                         "' (expected .exr, .hdr, .pfm, .png, .jpg or .tif)");
+    if (image.empty()) throw ImageError(path.string() + ": nothing to write (empty image)");
+
+    const bool keep_linear = is_float_format(ext);
+    const int channels = std::min(image.channels, 3);
+    std::vector<float> data(std::size_t(image.width) * image.height * channels);
+    const float gain = std::exp2(options.exposure);
+    for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
+        for (int c = 0; c < channels; ++c) {
+            const float v = image.pixels[p * image.channels + c];
+            data[p * channels + c] = keep_linear ? v : linear_to_srgb(v * gain);
+        }
+
+    // A unique temporary name beside the target keeps the rename atomic and on one file system.
+    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::string tmp_name = ".";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + string
+    tmp_name += path.stem().string();
+    tmp_name += ".partial-";
+    tmp_name += std::to_string(::getpid());
+    tmp_name += ext;
+    const std::filesystem::path tmp = dir / tmp_name;
+    auto output = OIIO::ImageOutput::create(path.string());
+    if (!output) throw ImageError(path.string() + ": cannot create a writer: " + OIIO::geterror());
+    OIIO::ImageSpec spec(image.width, image.height, channels,
+                         keep_linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", keep_linear ? "Linear" : "sRGB");
+    spec.attribute("Software", "Glint");
+    bool ok = output->open(tmp.string(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, data.data()) &&
+              output->close();
+    if (!ok) {
+        const std::string err = output->geterror();
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw ImageError(path.string() + ": cannot write image: " + err);
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw ImageError(path.string() + ": cannot move the finished image into place: " + ec.message());
+    }
+}
+
+}  // namespace glint

@@ -1,0 +1,54 @@
+#include "glint/scene/camera.h"
+
+#include "glint/math/constants.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace glint {
+
+Camera::Camera() : Camera(perspective({22.0f, 24.0f, 26.0f}, {0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 52.0f)) {}
+
+Camera::Camera(Projection projection, const Vec3& eye, const Vec3& target, const Vec3& up)
+    : projection_(projection), eye_(eye) {
+    const Vec3 view = target - eye;
+    if (!(length(view) > 0.0f) || !is_finite(view)) throw std::invalid_argument("camera position equals its target");
+    forward_ = normalize(view);
+    const Vec3 side = cross(forward_, up);
+    if (!(length(side) > 1e-6f * length(up))) throw std::invalid_argument("camera up vector is parallel to the view direction");
+    right_ = normalize(side);            // I_x = d_c × u_c
+    up_ = normalize(cross(right_, forward_));  // u_c made orthogonal to d_c
+}
+
+Camera Camera::perspective(const Vec3& eye, const Vec3& target, const Vec3& up, float vertical_fov) {
+    if (!(vertical_fov > 0.0f && vertical_fov < 180.0f))
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees");
+    Camera c(Projection::Perspective, eye, target, up);
+    c.vertical_fov_ = vertical_fov;
+    return c;
+}
+
+Camera Camera::orthographic(const Vec3& eye, const Vec3& target, const Vec3& up, float view_height) {
+    if (!(view_height > 0.0f && std::isfinite(view_height)))
+        throw std::invalid_argument("orthographic view height must be positive");
+    Camera c(Projection::Orthographic, eye, target, up);
+    c.view_height_ = view_height;
+    return c;
+}
+
+Ray Camera::generate_ray(float x, float y, int width, int height) const {
+    // Screen position in [-1, 1]², (-1, -1) bottom-left (handout §4.2.2).
+    const float sx = 2.0f * x / float(width) - 1.0f;
+    const float sy = 1.0f - 2.0f * y / float(height);
+    const float aspect = float(width) / float(height);
+    if (projection_ == Projection::Orthographic) {
+        const float half_h = 0.5f * view_height_;
+        const Vec3 origin = eye_ + right_ * (sx * half_h * aspect) + up_ * (sy * half_h);
+        return {origin, forward_};
+    }
+    const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
+    const Vec3 d = forward_ + (right_ * (sx * aspect) + up_ * sy) * tan_half;
+    return {eye_, normalize(d)};
+}
+
+}  // namespace glint
