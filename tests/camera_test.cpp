@@ -1,0 +1,58 @@
+#include "glint/math/constants.h"
+#include "glint/scene/camera.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace glint;
+
+TEST(Camera, CentrePixelLooksAlongTheViewDirection) {
+    const Camera cam = Camera::perspective({22, 24, 26}, {0, 2, 0}, {0, 1, 0}, 52.0f);
+    const Ray r = cam.generate_ray(320.0f, 240.0f, 640, 480);
+    const Vec3 expected = normalize(Vec3(0, 2, 0) - Vec3(22, 24, 26));
+    EXPECT_NEAR(dot(r.direction, expected), 1.0f, 1e-6f);
+    EXPECT_EQ(r.origin, Vec3(22, 24, 26));
+}
+
+TEST(Camera, EdgesMatchTheFieldOfView) {
+    const float fov = 52.0f;
+    const int w = 800, h = 400;
+    const Camera cam = Camera::perspective({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, fov);
+    const Vec3 forward(0, 0, -1);
+    // Top edge centre: half the vertical fov above the axis.
+    const Ray top = cam.generate_ray(w / 2.0f, 0.0f, w, h);
+    EXPECT_NEAR(std::acos(dot(top.direction, forward)), radians(fov / 2), 1e-5f);
+    EXPECT_GT(top.direction.y, 0.0f);
+    // Right edge centre: horizontal half-angle from tan = aspect · tan(fov/2).
+    const Ray right = cam.generate_ray(float(w), h / 2.0f, w, h);
+    EXPECT_NEAR(std::atan2(right.direction.x, -right.direction.z),
+                std::atan(2.0f * std::tan(radians(fov / 2))), 1e-5f);
+    // Corner: both offsets at once; (0,0) is the top-left.
+    const Ray corner = cam.generate_ray(0.0f, 0.0f, w, h);
+    const float t = std::tan(radians(fov / 2));
+    const Vec3 expected = normalize(Vec3(-2.0f * t, t, -1));
+    EXPECT_NEAR(dot(corner.direction, expected), 1.0f, 1e-6f);
+}
+
+TEST(Camera, UpVectorIsMadeOrthogonal) {
+    const Camera cam = Camera::perspective({0, 0, 0}, {0, -1, -1}, {0, 1, 0}, 40.0f);
+    EXPECT_NEAR(dot(cam.up(), cam.forward()), 0.0f, 1e-6f);
+    EXPECT_NEAR(dot(cam.right(), cam.forward()), 0.0f, 1e-6f);
+    EXPECT_GT(cam.up().y, 0.0f);
+}
+
+TEST(Camera, OrthographicRaysAreParallel) {
+    const Camera cam = Camera::orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 4.0f);
+    const Ray a = cam.generate_ray(0.0f, 0.0f, 100, 100), b = cam.generate_ray(100.0f, 100.0f, 100, 100);
+    EXPECT_EQ(a.direction, b.direction);
+    EXPECT_NEAR(a.origin.x, -2.0f, 1e-6f);
+    EXPECT_NEAR(a.origin.y, 2.0f, 1e-6f);
+    EXPECT_NEAR(b.origin.x, 2.0f, 1e-6f);
+}
+
+TEST(Camera, RejectsDegenerateSetups) {
+    EXPECT_THROW((void)Camera::perspective({0, 0, 0}, {0, 0, 0}, {0, 1, 0}, 45.0f), std::invalid_argument);
+    EXPECT_THROW((void)Camera::perspective({0, 0, 0}, {0, 5, 0}, {0, 1, 0}, 45.0f), std::invalid_argument);
+    EXPECT_THROW((void)Camera::perspective({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 180.0f), std::invalid_argument);
+}

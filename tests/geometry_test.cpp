@@ -1,0 +1,356 @@
+#include "glint/geometry/box.h"
+#include "glint/geometry/heightfield.h"
+#include "glint/geometry/quad.h"
+#include "glint/geometry/sphere.h"
+#include "glint/geometry/triangle.h"
+#include "glint/geometry/triangle_mesh.h"
+#include "glint/math/offset_ray.h"
+#include "glint/scene/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace glint;
+
+namespace {
+
+Vec3 random_unit(std::mt19937& rng) {
+    std::normal_distribution<float> g;
+    return normalize(Vec3(g(rng), g(rng), g(rng)));
+}
+
+}  // namespace
+
+// ---- Sphere ---------------------------------------------------------------------------
+
+TEST(Sphere, HitFromOutsideReturnsNearRoot) {
+    const Sphere s({0, 0, 0}, 2.0f);
+    Ray r({0, 0, -10}, {0, 0, 1});
+    Hit h;
+    ASSERT_TRUE(s.intersect(r, h));
+    EXPECT_FLOAT_EQ(h.t, 8.0f);
+    EXPECT_FLOAT_EQ(r.tmax, 8.0f);
+    SurfaceInteraction si;
+    s.interaction(r, h, si);
+    EXPECT_NEAR(si.geometric_normal.z, -1.0f, 1e-6f);
+    EXPECT_TRUE(si.front_face);
+}
+
+TEST(Sphere, MissAndBehind) {
+    const Sphere s({0, 0, 0}, 1.0f);
+    Ray miss({0, 1.01f, -5}, {0, 0, 1});
+    Hit h;
+    EXPECT_FALSE(s.intersect(miss, h));
+    Ray behind({0, 0, 5}, {0, 0, 1});
+    EXPECT_FALSE(s.intersect(behind, h));
+    EXPECT_FALSE(s.occluded(behind));
+}
+
+TEST(Sphere, GrazingRayTouchesOnce) {
+    const Sphere s({0, 0, 0}, 1.0f);
+    Ray r({0, 1.0f, -5}, {0, 0, 1});
+    Hit h;
+    ASSERT_TRUE(s.intersect(r, h));
+    EXPECT_NEAR(h.t, 5.0f, 1e-3f);
+}
+
+TEST(Sphere, FromInsideHitsFarRootBackFace) {
+    const Sphere s({1, 1, 1}, 3.0f);
+    Ray r({1, 1, 1}, {1, 0, 0});
+    Hit h;
+    ASSERT_TRUE(s.intersect(r, h));
+    EXPECT_FLOAT_EQ(h.t, 3.0f);
+    SurfaceInteraction si;
+    s.interaction(r, h, si);
+    EXPECT_FALSE(si.front_face);
+}
+
+TEST(Sphere, RespectsTRange) {
+    const Sphere s({0, 0, 0}, 1.0f);
+    Ray short_ray({0, 0, -5}, {0, 0, 1}, 0.0f, 3.9f);
+    Hit h;
+    EXPECT_FALSE(s.intersect(short_ray, h));
+    EXPECT_FALSE(s.occluded(short_ray));
+    Ray skip_near({0, 0, -5}, {0, 0, 1}, 4.5f, kInfinity);  // starts past the near root
+    ASSERT_TRUE(s.intersect(skip_near, h));
+    EXPECT_FLOAT_EQ(h.t, 6.0f);
+}
+
+TEST(Sphere, StableFarFromOrigin) {
+    // The textbook b² - 4ac loses every digit here; the stable form does not.
+    const Sphere s({0, 0, 0}, 1.0f);
+    Ray r({0, 0, -1e4f}, {0, 0, 1});
+    Hit h;
+    ASSERT_TRUE(s.intersect(r, h));
+    EXPECT_NEAR(h.t, 1e4f - 1.0f, 1e-2f);
+}
+
+TEST(Sphere, RejectsBadRadius) {
+    EXPECT_THROW(Sphere({0, 0, 0}, -1.0f), std::invalid_argument);
+    EXPECT_THROW(Sphere({0, 0, 0}, 0.0f), std::invalid_argument);
+    EXPECT_THROW(Sphere({0, 0, 0}, std::nanf("")), std::invalid_argument);
+}
+
+TEST(Sphere, ReintersectFromOffsetOriginNeverHitsAgain) {
+    // pbrt-v4's invariant: a ray leaving a convex shape outward never hits it again.
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<float> u(0.01f, 1000.0f);
+    for (int i = 0; i < 1000; ++i) {
+        const float radius = u(rng);
+        const Sphere s(random_unit(rng) * u(rng), radius);
+        Ray r(s.center() + random_unit(rng) * (radius * 3.0f), {});
+        r.direction = normalize(s.center() - r.origin + random_unit(rng) * (radius * 0.5f));
+        Hit h;
+        if (!s.intersect(r, h)) continue;
+        SurfaceInteraction si;
+        s.interaction(r, h, si);
+        Vec3 out = random_unit(rng);
+        if (dot(out, si.geometric_normal) < 0.0f) out = -out;
+        Ray again(offset_ray_origin(si.p, si.geometric_normal), out);
+        Hit h2;
+        EXPECT_FALSE(s.intersect(again, h2)) << "radius " << radius;
+    }
+}
+
+// ---- Triangle (seminar's Cramer's rule) --------------------------------------------------
+
+TEST(Triangle, HitGivesTAndBarycentrics) {
+    const Vec3 v0(0, 0, 0), v1(1, 0, 0), v2(0, 1, 0);
+    TriangleHit th;
+    ASSERT_TRUE(intersect_triangle(Ray({0.25f, 0.5f, 1}, {0, 0, -1}), v0, v1, v2, th));
+    EXPECT_FLOAT_EQ(th.t, 1.0f);
+    EXPECT_FLOAT_EQ(th.v, 0.25f);
+    EXPECT_FLOAT_EQ(th.w, 0.5f);
+    // Hits from the back too: culling is the shader's decision.
+    ASSERT_TRUE(intersect_triangle(Ray({0.25f, 0.25f, -1}, {0, 0, 1}), v0, v1, v2, th));
+}
+
+TEST(Triangle, MissOutsideParallelAndTRange) {
+    const Vec3 v0(0, 0, 0), v1(1, 0, 0), v2(0, 1, 0);
+    TriangleHit th;
+    EXPECT_FALSE(intersect_triangle(Ray({0.6f, 0.6f, 1}, {0, 0, -1}), v0, v1, v2, th));  // v + w > 1
+    EXPECT_FALSE(intersect_triangle(Ray({-0.1f, 0.5f, 1}, {0, 0, -1}), v0, v1, v2, th));
+    EXPECT_FALSE(intersect_triangle(Ray({0.2f, 0.2f, 1}, {1, 0, 0}), v0, v1, v2, th));  // parallel
+    EXPECT_FALSE(intersect_triangle(Ray({0.2f, 0.2f, 1}, {0, 0, -1}, 0.0f, 0.5f), v0, v1, v2, th));
+    EXPECT_FALSE(intersect_triangle(Ray({0.2f, 0.2f, 1}, {0, 0, 1}), v0, v1, v2, th));  // behind
+}
+
+TEST(Triangle, DegenerateNeverHits) {
+    TriangleHit th;
+    EXPECT_FALSE(intersect_triangle(Ray({0.5f, 0, 1}, {0, 0, -1}), {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, th));
+}
+
+// ---- Mesh -------------------------------------------------------------------------------
+
+TEST(TriangleMesh, InterpolatesNormalsUvsAndMaterials) {
+    MeshData d;
+    d.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    d.indices = {0, 1, 2};
+    d.normals = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+    d.uvs = {{0, 0}, {1, 0}, {0, 1}};
+    d.vertex_materials = {3, 4, 5};
+    TriangleMesh mesh(d);
+    mesh.prepare();
+    Ray r({0.25f, 0.5f, 1}, {0, 0, -1});
+    Hit h;
+    ASSERT_TRUE(mesh.intersect(r, h));
+    SurfaceInteraction si;
+    mesh.interaction(r, h, si);
+    EXPECT_NEAR(si.uv.x, 0.25f, 1e-6f);
+    EXPECT_NEAR(si.uv.y, 0.5f, 1e-6f);
+    EXPECT_NEAR(si.geometric_normal.z, 1.0f, 1e-6f);
+    const Vec3 expected = normalize(Vec3(0, 0, 1) * 0.25f + normalize(Vec3(1, 0, 1)) * 0.25f +
+                                    normalize(Vec3(0, 1, 1)) * 0.5f);
+    EXPECT_NEAR(dot(si.shading_normal, expected), 1.0f, 1e-5f);
+    ASSERT_TRUE(si.blends_materials);
+    EXPECT_EQ(si.materials[1], 4u);
+    EXPECT_NEAR(si.material_weights[0], 0.25f, 1e-6f);
+    EXPECT_NEAR(si.material_weights[2], 0.5f, 1e-6f);
+}
+
+TEST(TriangleMesh, RejectsBadData) {
+    MeshData out_of_range;
+    out_of_range.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    out_of_range.indices = {0, 1, 3};
+    EXPECT_THROW(TriangleMesh{out_of_range}, std::invalid_argument);
+    MeshData nan_vertex = out_of_range;
+    nan_vertex.indices = {0, 1, 2};
+    nan_vertex.positions[1].x = std::nanf("");
+    EXPECT_THROW(TriangleMesh{nan_vertex}, std::invalid_argument);
+    EXPECT_THROW(TriangleMesh{MeshData{}}, std::invalid_argument);
+}
+
+// ---- Quad and box -----------------------------------------------------------------------
+
+TEST(Quad, HitInsideMissOutside) {
+    const Quad q({0, 0, 0}, {2, 0, 0}, {0, 0, -2});
+    Ray r({0.5f, 3, -1.5f}, {0, -1, 0});
+    Hit h;
+    ASSERT_TRUE(q.intersect(r, h));
+    EXPECT_FLOAT_EQ(h.t, 3.0f);
+    SurfaceInteraction si;
+    q.interaction(r, h, si);
+    EXPECT_NEAR(si.uv.x, 0.25f, 1e-6f);
+    EXPECT_NEAR(si.uv.y, 0.75f, 1e-6f);
+    EXPECT_NEAR(si.geometric_normal.y, 1.0f, 1e-6f);  // (2,0,0) × (0,0,-2) = +y
+    Ray outside({2.5f, 3, -1}, {0, -1, 0});
+    EXPECT_FALSE(q.intersect(outside, h));
+    Ray parallel({0.5f, 0, 1}, {0, 0, -1});
+    EXPECT_FALSE(q.intersect(parallel, h));
+}
+
+TEST(Box, EntryFaceFromOutsideExitFaceFromInside) {
+    const Box b({-1, -1, -1}, {1, 1, 1});
+    Ray r({-5, 0.2f, 0.3f}, {1, 0, 0});
+    Hit h;
+    ASSERT_TRUE(b.intersect(r, h));
+    EXPECT_FLOAT_EQ(h.t, 4.0f);
+    SurfaceInteraction si;
+    b.interaction(r, h, si);
+    EXPECT_FLOAT_EQ(si.geometric_normal.x, -1.0f);
+    EXPECT_TRUE(si.front_face);
+    Ray inside({0, 0, 0}, {0, 0, 1});
+    ASSERT_TRUE(b.intersect(inside, h));
+    EXPECT_FLOAT_EQ(h.t, 1.0f);
+    b.interaction(inside, h, si);
+    EXPECT_FLOAT_EQ(si.geometric_normal.z, 1.0f);
+    EXPECT_FALSE(si.front_face);
+    Ray miss({-5, 2, 0}, {1, 0, 0});
+    EXPECT_FALSE(b.intersect(miss, h));
+}
+
+// ---- Heightfield ------------------------------------------------------------------------
+
+namespace {
+
+/// The same surface as a heightfield, as an explicit list of triangles.
+MeshData heightfield_as_mesh(uint32_t nx, uint32_t nz, const std::vector<float>& h, Vec2 lo, Vec2 hi) {
+    MeshData d;
+    const float dx = (hi.x - lo.x) / float(nx - 1), dz = (hi.y - lo.y) / float(nz - 1);
+    for (uint32_t j = 0; j < nz; ++j)
+        for (uint32_t i = 0; i < nx; ++i) d.positions.emplace_back(lo.x + float(i) * dx, h[j * nx + i], lo.y + float(j) * dz);
+    for (uint32_t j = 0; j + 1 < nz; ++j)
+        for (uint32_t i = 0; i + 1 < nx; ++i) {
+            const uint32_t a = j * nx + i, b = a + 1, c = a + nx, e = c + 1;
+            d.indices.insert(d.indices.end(), {a, c, e, a, e, b});
+        }
+    return d;
+}
+
+}  // namespace
+
+TEST(Heightfield, AgreesWithTriangleListOnRandomRays) {
+    const uint32_t nx = 23, nz = 17;
+    std::vector<float> h(nx * nz);
+    for (uint32_t j = 0; j < nz; ++j)
+        for (uint32_t i = 0; i < nx; ++i) h[j * nx + i] = 0.3f * std::sin(0.7f * float(i)) * std::cos(0.5f * float(j));
+    const Vec2 lo(-2, -1), hi(3, 2);
+    const Heightfield field(nx, nz, h, lo, hi);
+    TriangleMesh mesh(heightfield_as_mesh(nx, nz, h, lo, hi));
+    mesh.prepare();
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-4.0f, 4.0f);
+    int hits = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const Vec3 origin(u(rng), 2.0f + std::abs(u(rng)), u(rng));
+        const Vec3 target(u(rng) * 0.7f, u(rng) * 0.1f, u(rng) * 0.5f);
+        Ray r1(origin, normalize(target - origin)), r2 = r1;
+        Hit h1, h2;
+        const bool a = field.intersect(r1, h1), b = mesh.intersect(r2, h2);
+        ASSERT_EQ(a, b) << "ray " << i;
+        if (a) {
+            ++hits;
+            EXPECT_NEAR(h1.t, h2.t, 1e-4f * h2.t);
+            EXPECT_EQ(field.occluded(Ray(origin, r1.direction)), true);
+        }
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(Heightfield, VerticalRayAndOutsideExtent) {
+    const Heightfield field(2, 2, {1, 1, 1, 1}, Vec2(0, 0), Vec2(1, 1));
+    Ray down({0.5f, 5, 0.5f}, {0, -1, 0});
+    Hit h;
+    ASSERT_TRUE(field.intersect(down, h));
+    EXPECT_FLOAT_EQ(h.t, 4.0f);
+    SurfaceInteraction si;
+    field.interaction(down, h, si);
+    EXPECT_NEAR(si.shading_normal.y, 1.0f, 1e-6f);
+    EXPECT_NEAR(si.uv.x, 0.5f, 1e-5f);
+    Ray outside({1.5f, 5, 0.5f}, {0, -1, 0});
+    EXPECT_FALSE(field.intersect(outside, h));
+}
+
+TEST(Heightfield, RejectsBadGrids) {
+    EXPECT_THROW(Heightfield(1, 2, {0, 0}, Vec2(0, 0), Vec2(1, 1)), std::invalid_argument);
+    EXPECT_THROW(Heightfield(2, 2, {0, 0, 0}, Vec2(0, 0), Vec2(1, 1)), std::invalid_argument);
+    EXPECT_THROW(Heightfield(2, 2, {0, 0, 0, 0}, Vec2(0, 0), Vec2(0, 1)), std::invalid_argument);
+}
+
+// ---- Scene: transforms and instancing ---------------------------------------------------
+
+TEST(Scene, TransformedInstancesShareOneShape) {
+    Scene scene;
+    const uint32_t m = scene.add_material(Material{});
+    auto unit = std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f);
+    scene.add_object(unit, m, Transform::translate({5, 0, 0}) * Transform::scale({2, 2, 2}));
+    scene.add_object(unit, m, Transform::translate({-5, 0, 0}));
+    scene.prepare();
+    Ray r({5, 0, -10}, {0, 0, 1});
+    Hit h;
+    ASSERT_TRUE(scene.intersect(r, h));
+    EXPECT_NEAR(h.t, 8.0f, 1e-5f);  // radius 2 after scaling
+    EXPECT_EQ(h.object, 0u);
+    const SurfaceInteraction si = scene.interaction(r, h);
+    EXPECT_NEAR(si.p.z, -2.0f, 1e-5f);
+    EXPECT_NEAR(si.geometric_normal.z, -1.0f, 1e-5f);
+    Ray r2({-5, 0, -10}, {0, 0, 1});
+    ASSERT_TRUE(scene.intersect(r2, h));
+    EXPECT_NEAR(h.t, 9.0f, 1e-5f);
+    EXPECT_EQ(h.object, 1u);
+    EXPECT_EQ(scene.statistics().unique_shapes, 1u);
+}
+
+TEST(Scene, NonUniformScaleGivesEllipsoidNormals) {
+    Scene scene;
+    scene.add_material(Material{});
+    scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), 0, Transform::scale({3, 1, 1}));
+    scene.prepare();
+    // Point on the ellipsoid x²/9 + y² = 1 at x = 3/√2·..., reached straight down from above.
+    const float x = 1.5f, y = std::sqrt(1.0f - x * x / 9.0f);
+    Ray r({x, 5, 0}, {0, -1, 0});
+    Hit h;
+    ASSERT_TRUE(scene.intersect(r, h));
+    EXPECT_NEAR(h.t, 5.0f - y, 1e-5f);
+    const SurfaceInteraction si = scene.interaction(r, h);
+    const Vec3 expected = normalize(Vec3(x / 9.0f, y, 0));  // gradient of the implicit form
+    EXPECT_NEAR(dot(si.geometric_normal, expected), 1.0f, 1e-5f);
+}
+
+TEST(Scene, EmptySceneHitsNothing) {
+    Scene scene;
+    scene.prepare();
+    Ray r({0, 0, 0}, {0, 0, 1});
+    Hit h;
+    EXPECT_FALSE(scene.intersect(r, h));
+    EXPECT_FALSE(scene.occluded(r));
+}
+
+TEST(Scene, DielectricShadowSetting) {
+    for (auto mode : {DielectricShadows::None, DielectricShadows::Opaque}) {
+        Scene scene;
+        Material glass;
+        glass.transparency = 1.0f;
+        scene.dielectric_shadows = mode;
+        scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), scene.add_material(glass));
+        scene.prepare();
+        const Ray shadow({0, 0, -5}, {0, 0, 1}, 0.0f, 10.0f);
+        EXPECT_EQ(scene.occluded(shadow), mode == DielectricShadows::Opaque);
+        Ray camera = shadow;
+        Hit h;
+        EXPECT_TRUE(scene.intersect(camera, h));  // still visible to camera rays
+    }
+}
