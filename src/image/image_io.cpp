@@ -8,6 +8,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <system_error>
 #include <unistd.h>
@@ -23,6 +24,18 @@ std::string lower_extension(const std::filesystem::path& path) {
 }
 
 bool is_float_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
+
+/// Portable float map (PFM): "PF" header, width height, -1.0 (little-endian), then RGB float
+/// rows from the bottom up. OpenImageIO 2.4 (Debian 12) reads PFM but has no writer for it.
+bool write_pfm(const std::filesystem::path& path, const Image& image, const std::vector<float>& rgb) {
+    std::FILE* f = std::fopen(path.string().c_str(), "wb");
+    if (!f) return false;
+    bool ok = std::fprintf(f, "PF\n%d %d\n-1.0\n", image.width, image.height) > 0;
+    const auto row = std::size_t(image.width) * 3;
+    for (int y = image.height - 1; ok && y >= 0; --y)
+        ok = std::fwrite(&rgb[std::size_t(y) * row], sizeof(float), row, f) == row;
+    return std::fclose(f) == 0 && ok;
+}
 
 constexpr std::array<const char*, 8> kOutputExtensions = {".exr", ".hdr", ".pfm", ".png",
                                                           ".jpg", ".jpeg", ".tif", ".tiff"};
@@ -89,19 +102,27 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
     tmp_name += std::to_string(::getpid());
     tmp_name += ext;
     const std::filesystem::path tmp = dir / tmp_name;
-    auto output = OIIO::ImageOutput::create(path.string());
-    if (!output) throw ImageError(path.string() + ": cannot create a writer: " + OIIO::geterror());
-    OIIO::ImageSpec spec(image.width, image.height, channels,
-                         keep_linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", keep_linear ? "Linear" : "sRGB");
-    spec.attribute("Software", "Glint");
-    bool ok = output->open(tmp.string(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, data.data()) &&
-              output->close();
-    if (!ok) {
-        const std::string err = output->geterror();
+    std::string error;
+    if (ext == ".pfm") {
+        std::vector<float> rgb(std::size_t(image.width) * image.height * 3);
+        for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
+            for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = data[p * channels + std::min(c, channels - 1)];
+        if (!write_pfm(tmp, image, rgb)) error = "write failed";
+    } else {
+        auto output = OIIO::ImageOutput::create(path.string());
+        if (!output) throw ImageError(path.string() + ": cannot create a writer: " + OIIO::geterror());
+        OIIO::ImageSpec spec(image.width, image.height, channels,
+                             keep_linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+        spec.attribute("oiio:ColorSpace", keep_linear ? "Linear" : "sRGB");
+        spec.attribute("Software", "Glint");
+        if (!(output->open(tmp.string(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, data.data()) &&
+              output->close()))
+            error = output->geterror();
+    }
+    if (!error.empty()) {
         std::error_code ec;
         std::filesystem::remove(tmp, ec);
-        throw ImageError(path.string() + ": cannot write image: " + err);
+        throw ImageError(path.string() + ": cannot write image: " + error);
     }
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
