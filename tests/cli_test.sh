@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# End-to-end checks of the glint command line: what a user sees, exit codes, and that a
+# failed run leaves no output file. Usage: cli_test.sh GLINT_BINARY
+set -u
+glint=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# 1. The built-in scene renders, and the last line reports times and rays per second.
+out=$("$glint" render -o default.png --width 40 --height 30 --quiet) || fail "default render exited non-zero"
+[ -s default.png ] || fail "default render wrote no image"
+echo "$out" | grep -Eq 'load [0-9.]+ s, build [0-9.]+ s, render [0-9.]+ s, [0-9.]+ M rays \([0-9.]+ M rays/s\)' ||
+  fail "final line lacks times and rays per second: $out"
+
+# 2. The same image for any thread count (byte-identical float output).
+"$glint" render -o one.pfm --width 40 --height 30 --spp 4 --threads 1 -q >/dev/null || fail "1-thread render failed"
+"$glint" render -o two.pfm --width 40 --height 30 --spp 4 --threads 2 -q >/dev/null || fail "2-thread render failed"
+cmp -s one.pfm two.pfm || fail "1 and 2 threads gave different images"
+
+# 3. Bad arguments: non-zero exit, a message, and no file.
+if "$glint" render -o bad.xyz -q 2>err.txt; then fail "unknown extension accepted"; fi
+[ -e bad.xyz ] && fail "unknown extension left a file"
+grep -q "bad.xyz" err.txt || fail "extension error does not name the file: $(cat err.txt)"
+if "$glint" render -o spp.png --spp 8 -q 2>err.txt; then fail "--spp 8 accepted"; fi
+grep -q "square" err.txt || fail "--spp error does not explain: $(cat err.txt)"
+[ -e spp.png ] && fail "--spp error left a file"
+if "$glint" render does_not_exist.toml -o missing.png -q 2>/dev/null; then fail "missing scene accepted"; fi
+[ -e missing.png ] && fail "missing scene left a file"
+
+# 4. A scene-file mistake: file:line:column, exit status 1, no output file.
+cat > typo.toml <<'TOML'
+[camera]
+position = [0, 1, 5]
+look_at = [0, 0, 0]
+feild_of_view = 40
+TOML
+"$glint" render typo.toml -o typo.png -q 2>err.txt
+status=$?
+[ "$status" -eq 1 ] || fail "scene error exit status $status, expected 1"
+grep -Eq 'typo\.toml:[0-9]+:[0-9]+: ' err.txt || fail "scene error lacks file:line:column: $(cat err.txt)"
+[ -e typo.png ] && fail "scene error left an output file"
+ls -A | grep -q partial && fail "a temporary file was left behind"
+
+echo "$(( failures == 0 ? 1 : 0 )) passed, $failures failed"
+[ "$failures" -eq 0 ]
