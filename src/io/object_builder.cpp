@@ -109,7 +109,9 @@ BuiltShape triangle(const ParamTable& t, const Scene& scene) {
     data.positions = vec3_list(t, "vertices", true);
     if (data.positions.size() != 3) t.fail("vertices", "three corners [[x, y, z], [x, y, z], [x, y, z]]");
     if (degenerate(data.positions[0], data.positions[1], data.positions[2]))
-        t.fail("vertices", "three corners that span a triangle (these are collinear or coincide: a degenerate triangle)");
+        throw_scene_error(t.find("vertices")->where(),
+                          t.name_of("vertices") + " is a degenerate triangle (its corners are collinear or coincide); "
+                                                  "expected three corners that span a non-zero area");
     data.indices = {0, 1, 2};
     data.normals = vec3_list(t, "normals", false);
     data.uvs = vec2_list(t, "uvs");
@@ -131,8 +133,10 @@ BuiltShape inline_mesh(const ParamTable& t, const Scene& scene) {
     for (std::size_t tri = 0; tri < data.indices.size() / 3; ++tri) {
         const uint32_t* v = &data.indices[3 * tri];
         if (degenerate(data.positions[v[0]], data.positions[v[1]], data.positions[v[2]]))
-            indices[3 * tri]->fail(fmt::format("triangle {} ({}, {}, {}) of {}", tri, v[0], v[1], v[2], t.path()),
-                                   "corners that span a triangle (a degenerate triangle has collinear corners)");
+            throw_scene_error(indices[3 * tri]->where(),
+                              fmt::format("triangle {} (vertices {}, {}, {}) of {} is degenerate (its corners are "
+                                          "collinear or coincide); expected corners that span a non-zero area",
+                                          tri, v[0], v[1], v[2], t.path()));
     }
     data.normals = vec3_list(t, "normals", false);
     data.uvs = vec2_list(t, "uvs");

@@ -144,15 +144,16 @@ const ParamValue* ParamTable::find(std::string_view key) const {
 
 const ParamValue& ParamTable::require(std::string_view key, std::string_view expected) const {
     if (const ParamValue* v = find(key)) return *v;
-    // A misspelling of the missing key is the likeliest cause: point at it.
+    // A misspelling of the missing key is the likeliest cause: point at the misspelling.
     std::vector<std::string> unread;
     for (const Entry& e : entries_)
         if (!e.read) unread.push_back(e.key);
-    std::string hint;
+    const std::string where = path_.empty() ? "at the top level" : "in " + path_;
     if (const auto typo = closest_match(key, unread))
-        hint = fmt::format(" (is '{}' at {} a misspelling?)", *typo, entry(*typo)->key_where.to_string());
-    fail_here(fmt::format("missing key '{}' in {}; expected {}{}", key, path_.empty() ? "the top level" : path_,
-                          expected, hint));
+        throw_scene_error(entry(*typo)->key_where, fmt::format("unknown key '{}' {} (did you mean '{}'?); '{}' is "
+                                                               "required: expected {}",
+                                                               *typo, where, key, key, expected));
+    fail_here(fmt::format("missing key '{}' {}; expected {}", key, where, expected));
 }
 
 float ParamTable::number(std::string_view key, float fallback) const {
