@@ -149,7 +149,8 @@ std::shared_ptr<Shape> heightfield(const ParamTable& t) {
     const auto& r = res.as_array(t.name_of("resolution"));
     if (r.size() != 2) res.fail(t.name_of("resolution"), "[nx, nz], two integers");
     const int64_t nx = r[0].as_integer(t.name_of("resolution") + "[0]"), nz = r[1].as_integer(t.name_of("resolution") + "[1]");
-    if (nx < 2 || nz < 2 || nx * nz > (int64_t(1) << 24))
+    constexpr int64_t kMaxVertices = int64_t(1) << 24;
+    if (nx < 2 || nz < 2 || nx > kMaxVertices || nz > kMaxVertices || nx * nz > kMaxVertices)
         res.fail(t.name_of("resolution"), "at least 2×2 and at most 16M grid vertices");
     const Vec2 lo = t.require("min", "[x, z]").as_vec2(t.name_of("min"));
     const Vec2 hi = t.require("max", "[x, z]").as_vec2(t.name_of("max"));
@@ -233,7 +234,8 @@ void import_file(const ParamTable& t, const std::filesystem::path& base_dir, con
     try {
         const MeshImportResult result = import_mesh_file(scene, path, transform.value_or(Transform()), override_material);
         for (const std::string& w : result.warnings) warnings.push_back(t.find("file")->where().to_string() + ": " + w);
-    } catch (const SceneError& e) {
+    } catch (const std::exception& e) {
+        // The importer names the file; add where the scene asked for it.
         throw_scene_error(t.find("file")->where(), fmt::format("cannot import {}: {}", t.name_of("file"), e.what()));
     }
 }
