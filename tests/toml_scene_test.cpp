@@ -36,7 +36,8 @@ std::string error_of(std::string_view text) {
 void expect_error(std::string_view text, const std::string& location, std::initializer_list<std::string> words) {
     const std::string message = error_of(text);
     EXPECT_EQ(message.rfind(location, 0), 0u) << "expected the message to start with " << location << ":\n" << message;
-    for (const std::string& w : words) EXPECT_NE(message.find(w), std::string::npos) << "missing '" << w << "' in:\n" << message;
+    for (const std::string& w : words)
+        EXPECT_NE(message.find(w), std::string::npos) << "missing '" << w << "' in:\n" << message;
 }
 
 constexpr std::string_view kRed = "[[materials]]\nname = \"red\"\n";
@@ -62,33 +63,36 @@ TEST(TomlSceneErrors, UnknownKeyWithoutCloseMatchListsTheKeys) {
 }
 
 TEST(TomlSceneErrors, UnknownKeyInsideTransform) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n"
-                                     "transform = { scale = 2, translat = [0, 1, 0] }\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n"
+                     "transform = { scale = 2, translat = [0, 1, 0] }\n",
                  "test.toml:7:26:", {"unknown key 'translat'", "objects[0].transform", "did you mean 'translate'?"});
 }
 
 TEST(TomlSceneErrors, UnknownKeyInsideWaveList) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"heightfield\"\nresolution = [2, 2]\nmin = [0, 0]\n"
-                                     "max = [1, 1]\nmaterial = \"red\"\n"
-                                     "waves = [{ amplitude = 1, wavelength = 2, phaze = 3 }]\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"heightfield\"\nresolution = [2, 2]\nmin = [0, 0]\n"
+                     "max = [1, 1]\nmaterial = \"red\"\n"
+                     "waves = [{ amplitude = 1, wavelength = 2, phaze = 3 }]\n",
                  "test.toml:9:43:", {"unknown key 'phaze'", "objects[0].waves[0]", "did you mean 'phase'?"});
 }
 
 TEST(TomlSceneErrors, UnknownKeyForThisShapeType) {
     // `positions` is a mesh key: a sphere must not swallow it silently.
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n"
-                                     "positions = [[0, 0, 0]]\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n"
+                     "positions = [[0, 0, 0]]\n",
                  "test.toml:7:1:", {"unknown key 'positions'", "objects[0]"});
 }
 
 TEST(TomlSceneErrors, MisspeltRequiredKeyPointsAtTheMisspelling) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nraduis = 1\nmaterial = \"red\"\n", "test.toml:5:1:",
-                 {"unknown key 'raduis'", "did you mean 'radius'?", "'radius' is required"});
+    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nraduis = 1\nmaterial = \"red\"\n",
+                 "test.toml:5:1:", {"unknown key 'raduis'", "did you mean 'radius'?", "'radius' is required"});
 }
 
 TEST(TomlSceneErrors, MissingRequiredKey) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nmaterial = \"red\"\n", "test.toml:3:1:",
-                 {"missing key 'radius'", "objects[0]", "expected a number"});
+    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nmaterial = \"red\"\n",
+                 "test.toml:3:1:", {"missing key 'radius'", "objects[0]", "expected a number"});
 }
 
 TEST(TomlSceneErrors, WrongType) {
@@ -97,8 +101,8 @@ TEST(TomlSceneErrors, WrongType) {
 }
 
 TEST(TomlSceneErrors, WrongArrayLength) {
-    expect_error("[camera]\nposition = [1, 2]\nlook_at = [0, 0, 0]\n", "test.toml:2:12:",
-                 {"camera.position is an array of 2", "expected [x, y, z]"});
+    expect_error("[camera]\nposition = [1, 2]\nlook_at = [0, 0, 0]\n",
+                 "test.toml:2:12:", {"camera.position is an array of 2", "expected [x, y, z]"});
 }
 
 TEST(TomlSceneErrors, NegativeRadius) {
@@ -107,8 +111,8 @@ TEST(TomlSceneErrors, NegativeRadius) {
 }
 
 TEST(TomlSceneErrors, NotANumber) {
-    expect_error("[camera]\nposition = [1, nan, 3]\nlook_at = [0, 0, 0]\n", "test.toml:2:16:",
-                 {"camera.position[1] is nan", "expected a finite number"});
+    expect_error("[camera]\nposition = [1, nan, 3]\nlook_at = [0, 0, 0]\n",
+                 "test.toml:2:16:", {"camera.position[1] is nan", "expected a finite number"});
 }
 
 TEST(TomlSceneErrors, Infinity) {
@@ -116,56 +120,63 @@ TEST(TomlSceneErrors, Infinity) {
 }
 
 TEST(TomlSceneErrors, DegenerateTriangle) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"triangle\"\nvertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\n"
-                                     "material = \"red\"\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"triangle\"\nvertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\n"
+                     "material = \"red\"\n",
                  "test.toml:5:12:", {"objects[0].vertices is a degenerate triangle", "non-zero area"});
 }
 
 TEST(TomlSceneErrors, DegenerateMeshTriangle) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"mesh\"\npositions = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
-                                     "indices = [[0, 1, 2], [0, 1, 1]]\nmaterial = \"red\"\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"mesh\"\npositions = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+                     "indices = [[0, 1, 2], [0, 1, 1]]\nmaterial = \"red\"\n",
                  "test.toml:6:24:", {"triangle 1", "degenerate"});
 }
 
 TEST(TomlSceneErrors, IndexOutOfRange) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"mesh\"\npositions = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
-                                     "indices = [0, 1, 3]\nmaterial = \"red\"\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"mesh\"\npositions = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+                     "indices = [0, 1, 3]\nmaterial = \"red\"\n",
                  "test.toml:6:18:", {"is 3", "a vertex index from 0 to 2"});
 }
 
 TEST(TomlSceneErrors, MissingTextureFile) {
-    expect_error("[[textures]]\nname = \"t\"\ntype = \"image\"\nfile = \"assets/no_such_texture.png\"\n", "test.toml:4:8:",
-                 {"textures[0].file", "no_such_texture.png", "expected an existing file"});
+    expect_error("[[textures]]\nname = \"t\"\ntype = \"image\"\nfile = \"assets/no_such_texture.png\"\n",
+                 "test.toml:4:8:", {"textures[0].file", "no_such_texture.png", "expected an existing file"});
 }
 
 TEST(TomlSceneErrors, MissingMeshFile) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"mesh\"\nfile = \"assets/no_such_mesh.ply\"\n", "test.toml:5:8:",
-                 {"objects[0].file", "no_such_mesh.ply", "expected an existing file"});
+    expect_error(std::string(kRed) + "[[objects]]\ntype = \"mesh\"\nfile = \"assets/no_such_mesh.ply\"\n",
+                 "test.toml:5:8:", {"objects[0].file", "no_such_mesh.ply", "expected an existing file"});
 }
 
 TEST(TomlSceneErrors, MissingBackgroundFile) {
-    expect_error("[background]\ntype = \"equirect\"\nfile = \"sky.hdr\"\n", "test.toml:3:8:", {"background.file", "sky.hdr"});
+    expect_error("[background]\ntype = \"equirect\"\nfile = \"sky.hdr\"\n",
+                 "test.toml:3:8:", {"background.file", "sky.hdr"});
 }
 
 TEST(TomlSceneErrors, UnknownMaterialSuggestsTheClosest) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"rde\"\n", "test.toml:6:12:",
-                 {"objects[0].material is the string \"rde\"", "did you mean 'red'?"});
+    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"rde\"\n",
+                 "test.toml:6:12:", {"objects[0].material is the string \"rde\"", "did you mean 'red'?"});
 }
 
 TEST(TomlSceneErrors, UnknownPerVertexMaterial) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"triangle\"\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
-                                     "materials = [\"red\", \"red\", \"blue\"]\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"triangle\"\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+                     "materials = [\"red\", \"red\", \"blue\"]\n",
                  "test.toml:6:28:", {"objects[0].materials[2]", "a material in [[materials]]"});
 }
 
 TEST(TomlSceneErrors, UnknownTextureSuggestsTheClosest) {
-    expect_error("[[textures]]\nname = \"checks\"\ntype = \"checker\"\n[[materials]]\nname = \"m\"\ntexture = \"chekcs\"\n",
-                 "test.toml:6:11:", {"materials[0].texture", "did you mean 'checks'?"});
+    expect_error(
+        "[[textures]]\nname = \"checks\"\ntype = \"checker\"\n[[materials]]\nname = \"m\"\ntexture = \"chekcs\"\n",
+        "test.toml:6:11:", {"materials[0].texture", "did you mean 'checks'?"});
 }
 
 TEST(TomlSceneErrors, UnknownChoiceSuggestsTheClosest) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"shpere\"\nradius = 1\nmaterial = \"red\"\n", "test.toml:4:8:",
-                 {"objects[0].type is the string \"shpere\"", "one of \"sphere\"", "did you mean 'sphere'?"});
+    expect_error(
+        std::string(kRed) + "[[objects]]\ntype = \"shpere\"\nradius = 1\nmaterial = \"red\"\n",
+        "test.toml:4:8:", {"objects[0].type is the string \"shpere\"", "one of \"sphere\"", "did you mean 'sphere'?"});
 }
 
 TEST(TomlSceneErrors, SamplesPerPixelMustBeSquare) {
@@ -173,12 +184,13 @@ TEST(TomlSceneErrors, SamplesPerPixelMustBeSquare) {
 }
 
 TEST(TomlSceneErrors, DuplicateMaterialName) {
-    expect_error(std::string(kRed) + std::string(kRed), "test.toml:4:8:", {"materials[1].name", "not used by an earlier"});
+    expect_error(std::string(kRed) + std::string(kRed),
+                 "test.toml:4:8:", {"materials[1].name", "not used by an earlier"});
 }
 
 TEST(TomlSceneErrors, HandoutAndSeminarDielectricTogether) {
-    expect_error(std::string(kRed) + "refraction_index = 1.5\ntransparency = 0.5\n", "test.toml:3:20:",
-                 {"refraction_index", "not both"});
+    expect_error(std::string(kRed) + "refraction_index = 1.5\ntransparency = 0.5\n",
+                 "test.toml:3:20:", {"refraction_index", "not both"});
 }
 
 TEST(TomlSceneErrors, ZeroIorCannotBeTransparent) {
@@ -186,8 +198,9 @@ TEST(TomlSceneErrors, ZeroIorCannotBeTransparent) {
 }
 
 TEST(TomlSceneErrors, UnknownNamedShape) {
-    expect_error(std::string(kRed) + "[[shapes]]\nname = \"ball\"\ntype = \"sphere\"\nradius = 1\n"
-                                     "[[objects]]\nshape = \"bal\"\nmaterial = \"red\"\n",
+    expect_error(std::string(kRed) +
+                     "[[shapes]]\nname = \"ball\"\ntype = \"sphere\"\nradius = 1\n"
+                     "[[objects]]\nshape = \"bal\"\nmaterial = \"red\"\n",
                  "test.toml:8:9:", {"objects[0].shape", "did you mean 'ball'?"});
 }
 
@@ -196,8 +209,9 @@ TEST(TomlSceneErrors, CameraLookingAtItself) {
 }
 
 TEST(TomlSceneErrors, ZeroScale) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n"
-                                     "transform = { scale = [1, 0, 1] }\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n"
+                     "transform = { scale = [1, 0, 1] }\n",
                  "test.toml:7:23:", {"objects[0].transform.scale", "non-zero scale"});
 }
 
@@ -228,7 +242,8 @@ TEST(TomlScene, EmptyFileIsTheDefaults) {
 }
 
 TEST(TomlScene, RenderSettings) {
-    const LoadedScene s = load("[render]\nwidth = 320\nheight = 200\nspp = 9\nmax_depth = 3\nseed = 42\nfilter = \"tent\"\n");
+    const LoadedScene s =
+        load("[render]\nwidth = 320\nheight = 200\nspp = 9\nmax_depth = 3\nseed = 42\nfilter = \"tent\"\n");
     EXPECT_EQ(s.settings.width, 320u);
     EXPECT_EQ(s.settings.height, 200u);
     EXPECT_EQ(s.settings.samples_per_axis, 3u);
@@ -246,15 +261,17 @@ TEST(TomlScene, PerspectiveCamera) {
 }
 
 TEST(TomlScene, OrthographicCamera) {
-    const LoadedScene s = load("[camera]\ntype = \"orthographic\"\nposition = [0, 5, 0]\nlook_at = [0, 0, 0]\n"
-                               "up = [0, 0, -1]\nheight = 4\n");
+    const LoadedScene s = load(
+        "[camera]\ntype = \"orthographic\"\nposition = [0, 5, 0]\nlook_at = [0, 0, 0]\n"
+        "up = [0, 0, -1]\nheight = 4\n");
     EXPECT_EQ(s.scene.camera.projection(), Projection::Orthographic);
     EXPECT_FLOAT_EQ(s.scene.camera.view_height(), 4.0f);
 }
 
 TEST(TomlScene, WorldAndBackground) {
-    const LoadedScene s = load("[world]\nambient_light = [0.1, 0.2, 0.3]\nambient_ior = 1.33\n"
-                               "dielectric_shadows = \"opaque\"\n[background]\ncolor = 0.5\n");
+    const LoadedScene s = load(
+        "[world]\nambient_light = [0.1, 0.2, 0.3]\nambient_ior = 1.33\n"
+        "dielectric_shadows = \"opaque\"\n[background]\ncolor = 0.5\n");
     EXPECT_EQ(s.scene.ambient_light, Color(0.1f, 0.2f, 0.3f));
     EXPECT_FLOAT_EQ(s.scene.ambient_ior, 1.33f);
     EXPECT_EQ(s.scene.dielectric_shadows, DielectricShadows::Opaque);
@@ -263,8 +280,9 @@ TEST(TomlScene, WorldAndBackground) {
 }
 
 TEST(TomlScene, SphereMapBackgroundResolvesAgainstTheSceneFolder) {
-    const LoadedScene s = load("[background]\ntype = \"spheremap\"\nfile = \"assets/venice_sunset_mirrorball_256.hdr\"\n"
-                               "rotation = 90\nintensity = 2\n");
+    const LoadedScene s = load(
+        "[background]\ntype = \"spheremap\"\nfile = \"assets/venice_sunset_mirrorball_256.hdr\"\n"
+        "rotation = 90\nintensity = 2\n");
     EXPECT_EQ(s.scene.background.kind(), BackgroundKind::SphereMap);
     ASSERT_NE(s.scene.background.image(), nullptr);
     EXPECT_EQ(s.scene.background.image()->width, 256);
@@ -315,9 +333,10 @@ roughness = 0.5
 }
 
 TEST(TomlScene, HandoutRefractionIndex) {
-    const LoadedScene s = load("[[materials]]\nname = \"water\"\nrefraction_index = 1.33\n"
-                               "[[materials]]\nname = \"wall\"\nrefraction_index = 0\n"
-                               "[[materials]]\nname = \"opaque\"\nior = 0\n");
+    const LoadedScene s = load(
+        "[[materials]]\nname = \"water\"\nrefraction_index = 1.33\n"
+        "[[materials]]\nname = \"wall\"\nrefraction_index = 0\n"
+        "[[materials]]\nname = \"opaque\"\nior = 0\n");
     EXPECT_FLOAT_EQ(s.scene.material(0).transparency, 1.0f);
     EXPECT_FLOAT_EQ(s.scene.material(0).ior, 1.33f);
     EXPECT_FALSE(s.scene.material(1).is_dielectric());
@@ -325,9 +344,10 @@ TEST(TomlScene, HandoutRefractionIndex) {
 }
 
 TEST(TomlScene, ImageTextureWithUvScale) {
-    const LoadedScene s = load("[[textures]]\nname = \"t\"\ntype = \"image\"\n"
-                               "file = \"assets/kenney_prototype_orange_checker_1024.png\"\nwrap = \"repeat\"\n"
-                               "uv_scale = [4, 4]\n[[materials]]\nname = \"m\"\ntexture = \"t\"\n");
+    const LoadedScene s = load(
+        "[[textures]]\nname = \"t\"\ntype = \"image\"\n"
+        "file = \"assets/kenney_prototype_orange_checker_1024.png\"\nwrap = \"repeat\"\n"
+        "uv_scale = [4, 4]\n[[materials]]\nname = \"m\"\ntexture = \"t\"\n");
     ASSERT_NE(s.scene.material(0).texture, nullptr);
     // Four repeats: uv 0.1 and 0.35 land on the same texel of the image.
     const Texture& t = *s.scene.material(0).texture;
@@ -482,7 +502,8 @@ TEST(TomlScene, SpheresFileMatchesTheBuiltInScene) {
         }
         for (std::size_t i = 0; i < built_in.objects().size(); ++i) {
             EXPECT_EQ(file.scene.objects()[i].material, built_in.objects()[i].material) << "object " << i;
-            EXPECT_EQ(file.scene.objects()[i].world_from_object, built_in.objects()[i].world_from_object) << "object " << i;
+            EXPECT_EQ(file.scene.objects()[i].world_from_object, built_in.objects()[i].world_from_object)
+                << "object " << i;
         }
         EXPECT_EQ(file.scene.lights().size(), built_in.lights().size());
         EXPECT_EQ(file.scene.ambient_light, built_in.ambient_light);

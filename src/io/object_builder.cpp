@@ -21,7 +21,8 @@ namespace glint {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kShapeTypes{"sphere", "triangle", "mesh", "quad", "plane", "box", "heightfield"};
+constexpr std::array<std::string_view, 7> kShapeTypes{"sphere", "triangle", "mesh",       "quad",
+                                                      "plane",  "box",      "heightfield"};
 
 /// A built shape; meshes with per-vertex materials need no object material.
 struct BuiltShape {
@@ -57,7 +58,8 @@ std::vector<uint32_t> material_list(const ParamTable& t, const Scene& scene) {
     std::vector<uint32_t> out;
     if (const ParamValue* v = t.find("materials")) {
         const auto& a = v->as_array(t.name_of("materials"));
-        for (std::size_t i = 0; i < a.size(); ++i) out.push_back(material_by_name(scene, a[i], element(t, "materials", i)));
+        for (std::size_t i = 0; i < a.size(); ++i)
+            out.push_back(material_by_name(scene, a[i], element(t, "materials", i)));
     }
     return out;
 }
@@ -110,8 +112,9 @@ BuiltShape triangle(const ParamTable& t, const Scene& scene) {
     if (data.positions.size() != 3) t.fail("vertices", "three corners [[x, y, z], [x, y, z], [x, y, z]]");
     if (degenerate(data.positions[0], data.positions[1], data.positions[2]))
         throw_scene_error(t.find("vertices")->where(),
-                          t.name_of("vertices") + " is a degenerate triangle (its corners are collinear or coincide); "
-                                                  "expected three corners that span a non-zero area");
+                          t.name_of("vertices") +
+                              " is a degenerate triangle (its corners are collinear or coincide); "
+                              "expected three corners that span a non-zero area");
     data.indices = {0, 1, 2};
     data.normals = vec3_list(t, "normals", false);
     data.uvs = vec2_list(t, "uvs");
@@ -148,7 +151,8 @@ std::shared_ptr<Shape> heightfield(const ParamTable& t) {
     const ParamValue& res = t.require("resolution", "[nx, nz], the number of grid vertices along x and z");
     const auto& r = res.as_array(t.name_of("resolution"));
     if (r.size() != 2) res.fail(t.name_of("resolution"), "[nx, nz], two integers");
-    const int64_t nx = r[0].as_integer(t.name_of("resolution") + "[0]"), nz = r[1].as_integer(t.name_of("resolution") + "[1]");
+    const int64_t nx = r[0].as_integer(t.name_of("resolution") + "[0]"),
+                  nz = r[1].as_integer(t.name_of("resolution") + "[1]");
     constexpr int64_t kMaxVertices = int64_t(1) << 24;
     if (nx < 2 || nz < 2 || nx > kMaxVertices || nz > kMaxVertices || nx * nz > kMaxVertices)
         res.fail(t.name_of("resolution"), "at least 2×2 and at most 16M grid vertices");
@@ -160,7 +164,8 @@ std::shared_ptr<Shape> heightfield(const ParamTable& t) {
         // Row by row along +z, x fastest; either flat or one array per row.
         std::vector<const ParamValue*> values;
         for (const ParamValue& e : h->as_array(t.name_of("heights"))) {
-            if (!e.is_array()) values.push_back(&e);
+            if (!e.is_array())
+                values.push_back(&e);
             else
                 for (const ParamValue& x : e.as_array(t.name_of("heights"))) values.push_back(&x);
         }
@@ -229,10 +234,12 @@ void import_file(const ParamTable& t, const std::filesystem::path& base_dir, con
                  Scene& scene, std::vector<std::string>& warnings) {
     const std::filesystem::path path = resolve_input_file(t, "file", base_dir);
     std::optional<uint32_t> override_material;
-    if (const ParamValue* m = t.find("material")) override_material = material_by_name(scene, *m, t.name_of("material"));
+    if (const ParamValue* m = t.find("material"))
+        override_material = material_by_name(scene, *m, t.name_of("material"));
     t.reject_unknown_keys();
     try {
-        const MeshImportResult result = import_mesh_file(scene, path, transform.value_or(Transform()), override_material);
+        const MeshImportResult result =
+            import_mesh_file(scene, path, transform.value_or(Transform()), override_material);
         for (const std::string& w : result.warnings) warnings.push_back(t.find("file")->where().to_string() + ": " + w);
     } catch (const std::exception& e) {
         // The importer names the file; add where the scene asked for it.
@@ -264,8 +271,7 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, const std::fil
     }
     uint32_t material = built.first_material;
     const ParamValue* m = built.per_vertex_materials ? t.find("material") : &t.require("material", "a material name");
-    if (m && built.per_vertex_materials)
-        t.fail("material", "either one material or per-vertex materials, not both");
+    if (m && built.per_vertex_materials) t.fail("material", "either one material or per-vertex materials, not both");
     if (m) material = material_by_name(scene, *m, t.name_of("material"));
     const std::string name = t.string("name", "");
     t.reject_unknown_keys();

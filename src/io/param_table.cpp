@@ -41,7 +41,8 @@ std::string ParamValue::describe() const {
         std::string operator()(int64_t i) const { return std::to_string(i); }
         std::string operator()(double d) const { return fmt::format("{}", d); }
         std::string operator()(const std::string& s) const {
-            return s.size() <= 40 ? fmt::format("the string \"{}\"", s) : fmt::format("a string of {} characters", s.size());
+            return s.size() <= 40 ? fmt::format("the string \"{}\"", s)
+                                  : fmt::format("a string of {} characters", s.size());
         }
         std::string operator()(const Array& a) const { return fmt::format("an array of {}", a.size()); }
         std::string operator()(const std::shared_ptr<const ParamTable>&) const { return "a table"; }
@@ -187,9 +188,7 @@ Vec3 ParamTable::vec3(std::string_view key, const Vec3& fallback) const {
     return v ? v->as_vec3(name_of(key)) : fallback;
 }
 
-Vec3 ParamTable::require_vec3(std::string_view key) const {
-    return require(key, "[x, y, z]").as_vec3(name_of(key));
-}
+Vec3 ParamTable::require_vec3(std::string_view key) const { return require(key, "[x, y, z]").as_vec3(name_of(key)); }
 
 Vec2 ParamTable::vec2(std::string_view key, const Vec2& fallback) const {
     const ParamValue* v = find(key);
@@ -244,8 +243,8 @@ void ParamTable::reject_unknown_keys() const {
         std::sort(known.begin(), known.end());
         const std::string where = path_.empty() ? "at the top level" : "in " + path_;
         const std::string expected = known.empty() ? "no keys here" : "one of: " + join(known);
-        throw_scene_error(e.key_where,
-                          fmt::format("unknown key '{}' {}{}; expected {}", e.key, where, did_you_mean(e.key, known), expected));
+        throw_scene_error(e.key_where, fmt::format("unknown key '{}' {}{}; expected {}", e.key, where,
+                                                   did_you_mean(e.key, known), expected));
     }
 }
 

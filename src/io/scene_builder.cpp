@@ -100,8 +100,10 @@ Camera read_camera(const ParamTable& t) {
         return type == "perspective" ? Camera::perspective(position, look_at, up, size)
                                      : Camera::orthographic(position, look_at, up, size);
     } catch (const std::invalid_argument& e) {
-        t.fail_here(fmt::format("camera: {}; expected distinct position and look_at and an up vector off the view "
-                                "direction", e.what()));
+        t.fail_here(
+            fmt::format("camera: {}; expected distinct position and look_at and an up vector off the view "
+                        "direction",
+                        e.what()));
     }
 }
 
@@ -125,8 +127,9 @@ void read_world(const ParamTable& t, Scene& scene) {
     scene.ambient_light = t.color("ambient_light", Color(0.0f));
     scene.ambient_ior = t.number("ambient_ior", 1.0f);
     if (!(scene.ambient_ior > 0.0f)) t.fail("ambient_ior", "a positive index of refraction");
-    scene.dielectric_shadows =
-        t.choice("dielectric_shadows", kShadowModes, "none") == "opaque" ? DielectricShadows::Opaque : DielectricShadows::None;
+    scene.dielectric_shadows = t.choice("dielectric_shadows", kShadowModes, "none") == "opaque"
+                                   ? DielectricShadows::Opaque
+                                   : DielectricShadows::None;
     t.reject_unknown_keys();
 }
 
@@ -185,7 +188,8 @@ void read_material(const ParamTable& t, Builder& b) {
     const ParamValue* ior = t.find("ior");
     if (handout_ior) {
         if (transparency || ior)
-            t.fail("refraction_index", "either refraction_index (the handout's model) or transparency and ior, not both");
+            t.fail("refraction_index",
+                   "either refraction_index (the handout's model) or transparency and ior, not both");
         const float n = handout_ior->as_float(t.name_of("refraction_index"));
         if (n < 0.0f) t.fail("refraction_index", "0 for an opaque material or a positive index of refraction");
         m.transparency = n > 0.0f ? 1.0f : 0.0f;
@@ -229,7 +233,8 @@ std::unique_ptr<Light> read_light(const ParamTable& t) {
             if (!(length(direction) > 0.0f)) t.fail("direction", "a non-zero direction");
             const float outer = degrees_in(t, "outer_angle", 30.0f, 90.0f);
             const float inner = degrees_in(t, "inner_angle", outer, outer);
-            light = std::make_unique<SpotLight>(position, direction, intensity, radians(inner), radians(outer), falloff);
+            light =
+                std::make_unique<SpotLight>(position, direction, intensity, radians(inner), radians(outer), falloff);
         }
     }
     t.reject_unknown_keys();

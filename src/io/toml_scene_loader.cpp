@@ -21,7 +21,8 @@ SourceLocation location(const toml::source_region& region, const FileName& file)
     return {file, region.begin.line, region.begin.column};
 }
 
-std::shared_ptr<const ParamTable> convert_table(const toml::table& table, const std::string& path, const FileName& file);
+std::shared_ptr<const ParamTable> convert_table(const toml::table& table, const std::string& path,
+                                                const FileName& file);
 
 ParamValue convert(const toml::node& node, const std::string& path, const FileName& file) {
     const SourceLocation where = location(node.source(), file);
@@ -42,7 +43,8 @@ ParamValue convert(const toml::node& node, const std::string& path, const FileNa
     }
 }
 
-std::shared_ptr<const ParamTable> convert_table(const toml::table& table, const std::string& path, const FileName& file) {
+std::shared_ptr<const ParamTable> convert_table(const toml::table& table, const std::string& path,
+                                                const FileName& file) {
     auto out = std::make_shared<ParamTable>(path, location(table.source(), file));
     for (const auto& [key, node] : table) {
         const std::string name(key.str());

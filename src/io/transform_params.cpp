@@ -65,8 +65,10 @@ Transform step(const ParamTable& t) {
     t.reject_unknown_keys();
     const int count = int(scale != nullptr) + int(rotate != nullptr) + int(translate != nullptr) + int(mat != nullptr);
     if (count != 1)
-        t.fail_here(fmt::format("{} has {} steps; expected exactly one of scale, rotate, translate, matrix per table "
-                                "(the list gives the order)", t.path(), count));
+        t.fail_here(
+            fmt::format("{} has {} steps; expected exactly one of scale, rotate, translate, matrix per table "
+                        "(the list gives the order)",
+                        t.path(), count));
     if (scale) return scaling(*scale, t.name_of("scale"));
     if (rotate) return rotation(*rotate, t.name_of("rotate"));
     if (translate) return Transform::translate(translate->as_vec3(t.name_of("translate")));
@@ -89,7 +91,8 @@ Transform read_transform(const ParamValue& value, std::string_view what) {
     if (t.find("matrix")) {
         // A matrix is the whole transform; combining it with steps needs the list form's order.
         if (t.find("scale") || t.find("rotate") || t.find("translate"))
-            t.fail_here(name + " has a matrix and other steps; expected either alone, or a list of steps to give "
+            t.fail_here(name +
+                        " has a matrix and other steps; expected either alone, or a list of steps to give "
                         "their order");
         const Transform m = matrix(*t.find("matrix"), t.name_of("matrix"));
         t.reject_unknown_keys();
@@ -97,7 +100,8 @@ Transform read_transform(const ParamValue& value, std::string_view what) {
     }
     Transform world_from_object;
     if (const ParamValue* s = t.find("scale")) world_from_object = scaling(*s, t.name_of("scale"));
-    if (const ParamValue* r = t.find("rotate")) world_from_object = rotation(*r, t.name_of("rotate")) * world_from_object;
+    if (const ParamValue* r = t.find("rotate"))
+        world_from_object = rotation(*r, t.name_of("rotate")) * world_from_object;
     if (const ParamValue* tr = t.find("translate"))
         world_from_object = Transform::translate(tr->as_vec3(t.name_of("translate"))) * world_from_object;
     t.reject_unknown_keys();
