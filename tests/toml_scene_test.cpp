@@ -223,6 +223,8 @@ TEST(TomlSceneErrors, SectionOfTheWrongKind) {
     expect_error("[objects]\ntype = \"sphere\"\n", "test.toml:1:1:", {"objects is a table", "[[objects]]"});
 }
 
+TEST(TomlSceneErrors, DirectoryIsNotAScene) { EXPECT_THROW((void)load_toml_scene(kScenes), SceneError); }
+
 TEST(TomlSceneErrors, MissingSceneFileNamesIt) {
     try {
         (void)load_toml_scene(kScenes / "no_such_scene.toml");

@@ -69,6 +69,9 @@ LoadedScene load_toml_scene_string(std::string_view text, const std::string& sou
 }
 
 LoadedScene load_toml_scene(const std::filesystem::path& path) {
+    std::error_code ec;
+    // A directory opens as an empty stream on Linux; it must not load as an empty scene.
+    if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path.string() + ": no such scene file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path.string() + ": cannot open the scene file");
     std::ostringstream text;
