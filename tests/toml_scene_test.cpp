@@ -5,6 +5,7 @@
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/io/did_you_mean.h"
+#include "glint/io/source_excerpt.h"
 #include "glint/io/toml_scene_loader.h"
 #include "glint/scene/default_scene.h"
 
@@ -50,7 +51,8 @@ TEST(TomlSceneErrors, MalformedToml) {
 
 TEST(TomlSceneErrors, UnknownKeySuggestsTheClosest) {
     expect_error(std::string(kRed) + "difuse = 0.5\n", "test.toml:3:1:",
-                 {"unknown key 'difuse'", "materials[0]", "did you mean 'diffuse'?", "expected one of:"});
+                 {"unknown key 'difuse'", "materials[0]", "did you mean 'diffuse'?", "expected one of:",
+                  "\n 3 | difuse = 0.5\n   | ^"});
 }
 
 TEST(TomlSceneErrors, UnknownSection) {
@@ -513,6 +515,12 @@ TEST(TomlScene, SpheresFileMatchesTheBuiltInScene) {
         EXPECT_EQ(file.scene.background.color(), built_in.background.color());
         EXPECT_EQ(file.scene.camera.eye(), built_in.camera.eye());
     }
+}
+
+TEST(SourceExcerpt, CaretUnderTheColumn) {
+    EXPECT_EQ(source_excerpt("a = 1\n\tb = nan\n", 2, 6), "\n 2 | \tb = nan\n   | \t    ^");
+    EXPECT_EQ(source_excerpt("a = 1\r\n", 1, 1), "\n 1 | a = 1\n   | ^");
+    EXPECT_EQ(source_excerpt("a = 1", 3, 1), "");
 }
 
 // --- Suggestions ----------------------------------------------------------------------

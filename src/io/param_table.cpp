@@ -1,7 +1,6 @@
 #include "glint/io/param_table.h"
 
 #include "glint/io/did_you_mean.h"
-#include "glint/io/scene_file.h"
 
 #include <fmt/format.h>
 
@@ -28,7 +27,7 @@ std::string SourceLocation::to_string() const {
 }
 
 void throw_scene_error(const SourceLocation& where, const std::string& message) {
-    throw SceneError(where.to_string() + ": " + message);
+    throw LocatedSceneError(where, message);
 }
 
 bool ParamValue::is_number() const {

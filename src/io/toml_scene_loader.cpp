@@ -5,6 +5,7 @@
 
 #include "glint/io/param_table.h"
 #include "glint/io/scene_builder.h"
+#include "glint/io/source_excerpt.h"
 
 #include <toml++/toml.h>
 
@@ -62,10 +63,17 @@ LoadedScene load_toml_scene_string(std::string_view text, const std::string& sou
     try {
         document = toml::parse(text, source_name);
     } catch (const toml::parse_error& e) {
-        throw_scene_error(location(e.source(), file), "invalid TOML: " + std::string(e.description()));
+        const SourceLocation where = location(e.source(), file);
+        throw SceneError(where.to_string() + ": invalid TOML: " + std::string(e.description()) +
+                         source_excerpt(text, where.line, where.column));
     }
-    const auto root = convert_table(document, "", file);
-    return build_scene(*root, base_dir);
+    try {
+        const auto root = convert_table(document, "", file);
+        return build_scene(*root, base_dir);
+    } catch (const LocatedSceneError& e) {
+        if (!e.where().file || *e.where().file != source_name) throw;
+        throw SceneError(e.what() + source_excerpt(text, e.where().line, e.where().column));
+    }
 }
 
 LoadedScene load_toml_scene(const std::filesystem::path& path) {
