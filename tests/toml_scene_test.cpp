@@ -142,6 +142,12 @@ TEST(TomlSceneErrors, IndexOutOfRange) {
                  "test.toml:6:18:", {"is 3", "a vertex index from 0 to 2"});
 }
 
+TEST(TomlSceneErrors, HeightfieldRowOfTheWrongLength) {
+    expect_error(std::string(kRed) + "[[objects]]\ntype = \"heightfield\"\nresolution = [3, 2]\nmin = [0, 0]\n"
+                                     "max = [1, 1]\nheights = [[0, 1, 2], [3, 4]]\nmaterial = \"red\"\n",
+                 "test.toml:8:23:", {"objects[0].heights row is an array of 2", "nx = 3 heights"});
+}
+
 TEST(TomlSceneErrors, MissingTextureFile) {
     expect_error("[[textures]]\nname = \"t\"\ntype = \"image\"\nfile = \"assets/no_such_texture.png\"\n",
                  "test.toml:4:8:", {"textures[0].file", "no_such_texture.png", "expected an existing file"});

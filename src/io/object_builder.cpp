@@ -164,10 +164,13 @@ std::shared_ptr<Shape> heightfield(const ParamTable& t) {
         // Row by row along +z, x fastest; either flat or one array per row.
         std::vector<const ParamValue*> values;
         for (const ParamValue& e : h->as_array(t.name_of("heights"))) {
-            if (!e.is_array())
+            if (!e.is_array()) {
                 values.push_back(&e);
-            else
-                for (const ParamValue& x : e.as_array(t.name_of("heights"))) values.push_back(&x);
+                continue;
+            }
+            const auto& row = e.as_array(t.name_of("heights"));
+            if (int64_t(row.size()) != nx) e.fail(t.name_of("heights") + " row", fmt::format("nx = {} heights", nx));
+            for (const ParamValue& x : row) values.push_back(&x);
         }
         if (values.size() != heights.size())
             h->fail(t.name_of("heights"), fmt::format("nx·nz = {} heights, row by row (x fastest)", heights.size()));
