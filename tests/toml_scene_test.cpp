@@ -51,8 +51,8 @@ TEST(TomlSceneErrors, MalformedToml) {
 
 TEST(TomlSceneErrors, UnknownKeySuggestsTheClosest) {
     expect_error(std::string(kRed) + "difuse = 0.5\n", "test.toml:3:1:",
-                 {"unknown key 'difuse'", "materials[0]", "did you mean 'diffuse'?", "expected one of:",
-                  "\n 3 | difuse = 0.5\n   | ^"});
+                 {"unknown key 'difuse'", "materials[0]", "did you mean 'diffuse'?",
+                  "expected one of:", "\n 3 | difuse = 0.5\n   | ^"});
 }
 
 TEST(TomlSceneErrors, UnknownSection) {
@@ -143,8 +143,9 @@ TEST(TomlSceneErrors, IndexOutOfRange) {
 }
 
 TEST(TomlSceneErrors, HeightfieldRowOfTheWrongLength) {
-    expect_error(std::string(kRed) + "[[objects]]\ntype = \"heightfield\"\nresolution = [3, 2]\nmin = [0, 0]\n"
-                                     "max = [1, 1]\nheights = [[0, 1, 2], [3, 4]]\nmaterial = \"red\"\n",
+    expect_error(std::string(kRed) +
+                     "[[objects]]\ntype = \"heightfield\"\nresolution = [3, 2]\nmin = [0, 0]\n"
+                     "max = [1, 1]\nheights = [[0, 1, 2], [3, 4]]\nmaterial = \"red\"\n",
                  "test.toml:8:23:", {"objects[0].heights row is an array of 2", "nx = 3 heights"});
 }
 

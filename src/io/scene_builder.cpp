@@ -16,7 +16,6 @@ namespace glint {
 
 namespace {
 
-using Choices = std::span<const std::string_view>;
 constexpr std::array<std::string_view, 2> kFilters{"box", "tent"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 constexpr std::array<std::string_view, 3> kBackgrounds{"color", "spheremap", "equirect"};
@@ -59,7 +58,7 @@ struct Builder {
     }
 };
 
-/// A non-negative integer no larger than `max`.
+/// An integer from `min` to `max`.
 uint32_t count(const ParamTable& t, std::string_view key, int64_t fallback, int64_t min, int64_t max) {
     const int64_t n = t.integer(key, fallback);
     if (n < min || n > max) t.fail(key, fmt::format("an integer from {} to {}", min, max));
