@@ -252,6 +252,15 @@ TEST(TomlScene, EmptyFileIsTheDefaults) {
     EXPECT_TRUE(s.scene.objects().empty());
 }
 
+TEST(TomlScene, WarnsAboutAnUnlitScene) {
+    EXPECT_EQ(load("").warnings.size(), 1u);  // no objects
+    const LoadedScene unlit =
+        load(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n");
+    ASSERT_EQ(unlit.warnings.size(), 1u);
+    EXPECT_NE(unlit.warnings[0].find("no [[lights]]"), std::string::npos) << unlit.warnings[0];
+    EXPECT_TRUE(load_toml_scene(kScenes / "cornell.toml").warnings.empty());
+}
+
 TEST(TomlScene, RenderSettings) {
     const LoadedScene s =
         load("[render]\nwidth = 320\nheight = 200\nspp = 9\nmax_depth = 3\nseed = 42\nfilter = \"tent\"\n");

@@ -278,6 +278,14 @@ LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& bas
     add_objects(root, base_dir, out.scene, out.warnings);
     // Every builder rejected its own unknown keys; this catches tables none of them visited.
     root.reject_unknown_keys_recursive();
+    // Legal but most likely not what was meant: the render would show only the background.
+    const std::string file = root.where().file ? *root.where().file : std::string("<scene>");
+    if (out.scene.objects().empty())
+        out.warnings.push_back(file + ": the scene has no [[objects]]");
+    else if (out.scene.lights().empty() && out.scene.ambient_light.is_black())
+        out.warnings.push_back(file +
+                               ": the scene has no [[lights]] and no ambient light; only emission, "
+                               "reflections and refractions of the background will show");
     return out;
 }
 
