@@ -1,0 +1,25 @@
+#pragma once
+/// \file A texture looked up at scaled and shifted coordinates (the `uv_scale` and
+/// `uv_offset` keys of scene-file textures), so a texture can tile a shape whose own
+/// coordinates span [0, 1].
+
+#include "glint/materials/texture.h"
+
+namespace glint {
+
+class UvTransformTexture final : public Texture {
+public:
+    /// Looks `base` up at uv·scale + offset; `base` must outlive this texture.
+    UvTransformTexture(const Texture* base, Vec2 scale, Vec2 offset) : base_(base), scale_(scale), offset_(offset) {}
+    [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const override { return base_->evaluate(map(uv), p); }
+    [[nodiscard]] float alpha(const Vec2& uv) const override { return base_->alpha(map(uv)); }
+    [[nodiscard]] std::string_view type_name() const override { return base_->type_name(); }
+
+private:
+    [[nodiscard]] Vec2 map(const Vec2& uv) const { return {uv.x * scale_.x + offset_.x, uv.y * scale_.y + offset_.y}; }
+
+    const Texture* base_;
+    Vec2 scale_, offset_;
+};
+
+}  // namespace glint
