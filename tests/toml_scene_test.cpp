@@ -301,11 +301,11 @@ TEST(TomlScene, WorldAndBackground) {
 
 TEST(TomlScene, SphereMapBackgroundResolvesAgainstTheSceneFolder) {
     const LoadedScene s = load(
-        "[background]\ntype = \"spheremap\"\nfile = \"assets/venice_sunset_mirrorball_256.hdr\"\n"
+        "[background]\ntype = \"spheremap\"\nfile = \"assets/venice_sunset_mirrorball_512.hdr\"\n"
         "rotation = 90\nintensity = 2\n");
     EXPECT_EQ(s.scene.background.kind(), BackgroundKind::SphereMap);
     ASSERT_NE(s.scene.background.image(), nullptr);
-    EXPECT_EQ(s.scene.background.image()->width, 256);
+    EXPECT_EQ(s.scene.background.image()->width, 512);
 }
 
 TEST(TomlScene, EveryMaterialField) {

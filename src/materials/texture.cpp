@@ -8,25 +8,7 @@ ImageTexture::ImageTexture(std::shared_ptr<const Image> image, WrapMode wrap, Co
     : image_(std::move(image)), wrap_(wrap), scale_(scale) {}
 
 void ImageTexture::lookup(const Vec2& uv, int first, int count, float* out) const {
-    const Image& img = *image_;
-    // Texel centres sit at half-integer coordinates.
-    const float x = uv.x * float(img.width) - 0.5f;
-    const float y = uv.y * float(img.height) - 0.5f;
-    const float fx = std::floor(x), fy = std::floor(y);
-    const float tx = x - fx, ty = y - fy;
-    auto wrap = [&](int i, int n) {
-        if (wrap_ == WrapMode::Clamp) return std::clamp(i, 0, n - 1);
-        const int m = i % n;
-        return m < 0 ? m + n : m;
-    };
-    const int x0 = wrap(int(fx), img.width), x1 = wrap(int(fx) + 1, img.width);
-    const int y0 = wrap(int(fy), img.height), y1 = wrap(int(fy) + 1, img.height);
-    for (int k = 0; k < count; ++k) {
-        const int c = first + k;
-        const float top = img.at(x0, y0, c) * (1.0f - tx) + img.at(x1, y0, c) * tx;
-        const float bottom = img.at(x0, y1, c) * (1.0f - tx) + img.at(x1, y1, c) * tx;
-        out[k] = top * (1.0f - ty) + bottom * ty;
-    }
+    sample_bilinear(*image_, uv, wrap_, wrap_, first, count, out);
 }
 
 Color ImageTexture::evaluate(const Vec2& uv, const Vec3&) const {

@@ -1,5 +1,6 @@
 #include "glint/scene/background.h"
 
+#include "glint/image/image_sampling.h"
 #include "glint/math/constants.h"
 
 #include <cmath>
@@ -48,11 +49,16 @@ Color Background::evaluate(const Vec3& direction) const {
     const Vec3 d = normalize(direction);
     const Vec3 r(cos_rotation_ * d.x - sin_rotation_ * d.z, d.y, sin_rotation_ * d.x + cos_rotation_ * d.z);
     const Vec2 uv = kind_ == BackgroundKind::Equirectangular ? equirectangular_uv(r) : sphere_map_uv(r);
-    const Image& img = *image_;
-    // Nearest texel: environment maps are large relative to a pixel's footprint here.
-    const int x = std::clamp(int(uv.x * float(img.width)), 0, img.width - 1);
-    const int y = std::clamp(int(uv.y * float(img.height)), 0, img.height - 1);
-    return img.rgb(x, y) * scale_;
+    // Bilinear: an environment seen directly fills many pixels per texel. Longitude wraps
+    // around in a latitude-longitude map; everything else clamps at the border.
+    const WrapMode wrap_u = kind_ == BackgroundKind::Equirectangular ? WrapMode::Repeat : WrapMode::Clamp;
+    float rgb[3];
+    if (image_->channels >= 3) {
+        sample_bilinear(*image_, uv, wrap_u, WrapMode::Clamp, 0, 3, rgb);
+        return Color(rgb[0], rgb[1], rgb[2]) * scale_;
+    }
+    sample_bilinear(*image_, uv, wrap_u, WrapMode::Clamp, 0, 1, rgb);
+    return Color(rgb[0]) * scale_;
 }
 
 }  // namespace glint

@@ -2,6 +2,7 @@
 /// \file Textures: colours that vary over a surface.
 
 #include "glint/image/image.h"
+#include "glint/image/image_sampling.h"
 #include "glint/math/color.h"
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
@@ -20,8 +21,6 @@ public:
     [[nodiscard]] virtual float alpha(const Vec2& /*uv*/) const { return 1.0f; }
     [[nodiscard]] virtual std::string_view type_name() const = 0;
 };
-
-enum class WrapMode { Repeat, Clamp };
 
 /// An image looked up with bilinear filtering. v = 0 is the top row of the image
 /// (the glTF/OBJ-after-flip convention; loaders flip where their format differs).

@@ -1,0 +1,17 @@
+#pragma once
+/// \file Filtered lookups into an Image, shared by textures and environment maps.
+
+#include "glint/image/image.h"
+#include "glint/math/vec2.h"
+
+namespace glint {
+
+/// What a lookup does outside [0, 1).
+enum class WrapMode { Repeat, Clamp };
+
+/// Bilinear interpolation of channels [first, first + count) at uv ∈ [0,1]² (v = 0 is the
+/// top row; texel centres at half-integer pixel coordinates), wrapping u and v separately.
+void sample_bilinear(const Image& image, const Vec2& uv, WrapMode wrap_u, WrapMode wrap_v, int first, int count,
+                     float* out);
+
+}  // namespace glint
