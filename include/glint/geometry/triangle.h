@@ -4,6 +4,9 @@
 #include "glint/math/ray.h"
 #include "glint/math/vec3.h"
 
+#include <cmath>
+#include <utility>
+
 namespace glint {
 
 /// Result of a ray-triangle test: t and the barycentric weights (v, w) of v1 and v2
@@ -37,6 +40,56 @@ struct TriangleHit {
     const float w = -dot(e1, q) * inv_s;
     if (w < 0.0f || v + w > 1.0f) return false;
     out = {t, v, w};
+    return true;
+}
+
+/// Per-ray constants of the watertight test: the axis kz where the direction is largest,
+/// the other two (swapped when d[kz] < 0 to keep the winding), and the shear that maps the
+/// direction onto +z.
+struct WatertightRay {
+    int kx, ky, kz;
+    float sx, sy, sz;
+    explicit WatertightRay(const Vec3& d) {
+        const Vec3 ad = abs(d);
+        kz = max_axis(ad);
+        kx = kz == 2 ? 0 : kz + 1;
+        ky = kx == 2 ? 0 : kx + 1;
+        if (d[kz] < 0.0f) std::swap(kx, ky);
+        sx = d[kx] / d[kz];
+        sy = d[ky] / d[kz];
+        sz = 1.0f / d[kz];
+    }
+};
+
+/// Watertight ray-triangle test (Woop, Benthin, Wald 2013, "Watertight Ray/Triangle
+/// Intersection", JCGT 2(1)): the vertices are moved into a frame where the ray is the +z
+/// axis, and the 2D edge functions U, V, W decide inside/outside. Two triangles sharing an
+/// edge compute the same edge function for it, so no ray slips between them; an edge
+/// function that rounds to zero counts as inside, so rays through edges and vertices hit
+/// (possibly both neighbours). Accepts t strictly inside (tmin, tmax), either winding, and
+/// never reports a zero-area triangle (U + V + W = 0). The SIMD leaf test in
+/// triangle_bvh.cpp is the same arithmetic, four triangles at a time.
+[[nodiscard]] inline bool intersect_triangle_watertight(const Ray& ray, const WatertightRay& w, const Vec3& v0,
+                                                        const Vec3& v1, const Vec3& v2, TriangleHit& out) {
+    const Vec3 a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;
+    const float ax = a[w.kx] - w.sx * a[w.kz], ay = a[w.ky] - w.sy * a[w.kz];
+    const float bx = b[w.kx] - w.sx * b[w.kz], by = b[w.ky] - w.sy * b[w.kz];
+    const float cx = c[w.kx] - w.sx * c[w.kz], cy = c[w.ky] - w.sy * c[w.kz];
+    // The edge functions in double: products of floats are exact there, so the value for an
+    // edge shared by two triangles is exactly negated whether or not the compiler fuses
+    // multiply-adds (the paper falls back to double only when a float result is zero).
+    const double u = double(cx) * by - double(cy) * bx;
+    const double v = double(ax) * cy - double(ay) * cx;
+    const double wgt = double(bx) * ay - double(by) * ax;
+    if ((u < 0.0 || v < 0.0 || wgt < 0.0) && (u > 0.0 || v > 0.0 || wgt > 0.0)) return false;
+    const double det = u + v + wgt;
+    if (det == 0.0) return false;
+    const double sz = w.sz;
+    const double t_scaled = u * (sz * a[w.kz]) + v * (sz * b[w.kz]) + wgt * (sz * c[w.kz]);
+    const double inv_det = 1.0 / det;
+    const auto t = static_cast<float>(t_scaled * inv_det);
+    if (!(t > ray.tmin && t < ray.tmax)) return false;
+    out = {t, static_cast<float>(v * inv_det), static_cast<float>(wgt * inv_det)};
     return true;
 }
 

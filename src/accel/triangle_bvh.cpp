@@ -1,0 +1,45 @@
+#include "glint/accel/triangle_bvh.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace glint {
+
+void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_t> indices) {
+    const size_t count = indices.size() / 3;
+    std::vector<Bounds3> boxes(count);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1u << 14), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t t = r.begin(); t < r.end(); ++t) {
+            Bounds3 b;
+            for (int k = 0; k < 3; ++k) b.extend(positions[indices[3 * t + k]]);
+            boxes[t] = b;
+        }
+    });
+    BvhBuildConfig config;
+    config.max_leaf_size = TriangleBlock::kWidth;
+    config.leaf_block_log2 = 2;
+    wide_.build(boxes, config);
+    const std::span<const WideLeaf> leaves = wide_.leaves();
+    const std::span<const uint32_t> order = wide_.primitive_order();
+    blocks_.assign(leaves.size(), TriangleBlock{});
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size(), 1u << 12), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t l = r.begin(); l < r.end(); ++l) {
+            TriangleBlock& block = blocks_[l];
+            for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
+                // Unused lanes stay zero-area triangles at the origin: never a hit.
+                block.triangle[lane] = kNoHit;
+                if (lane >= leaves[l].count) continue;
+                const uint32_t tri = order[leaves[l].first + lane];
+                block.triangle[lane] = tri;
+                for (int vtx = 0; vtx < 3; ++vtx) {
+                    const Vec3& p = positions[indices[3 * size_t(tri) + vtx]];
+                    for (int a = 0; a < 3; ++a) block.v[vtx][a][lane] = p[a];
+                }
+            }
+        }
+    });
+    // Leaf k is block k now; the ranges are no longer needed.
+    wide_.discard_leaf_ranges();
+}
+
+}  // namespace glint
