@@ -2,6 +2,8 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <cstdlib>
+#include <limits>
 
 namespace glint {
 
@@ -18,6 +20,9 @@ void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_
     BvhBuildConfig config;
     config.max_leaf_size = TriangleBlock::kWidth;
     config.leaf_block_log2 = 2;
+    if (const char* e = std::getenv("GLINT_BINS")) config.bin_count = std::atoi(e);
+    if (const char* e = std::getenv("GLINT_TRAV")) config.traversal_cost = std::atof(e);
+    if (const char* e = std::getenv("GLINT_BLOCKLOG")) config.leaf_block_log2 = std::atoi(e);
     wide_.build(boxes, config);
     const std::span<const WideLeaf> leaves = wide_.leaves();
     const std::span<const uint32_t> order = wide_.primitive_order();
@@ -26,9 +31,13 @@ void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_
         for (size_t l = r.begin(); l < r.end(); ++l) {
             TriangleBlock& block = blocks_[l];
             for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
-                // Unused lanes stay zero-area triangles at the origin: never a hit.
+                // Unused lanes get NaN vertices: every comparison fails, never a hit.
                 block.triangle[lane] = kNoHit;
-                if (lane >= leaves[l].count) continue;
+                if (lane >= leaves[l].count) {
+                    for (auto& vertex : block.v)
+                        for (auto& axis : vertex) axis[lane] = std::numeric_limits<float>::quiet_NaN();
+                    continue;
+                }
                 const uint32_t tri = order[leaves[l].first + lane];
                 block.triangle[lane] = tri;
                 for (int vtx = 0; vtx < 3; ++vtx) {

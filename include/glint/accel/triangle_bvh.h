@@ -19,8 +19,8 @@
 
 namespace glint {
 
-/// Four triangles, structure of arrays: v[vertex][axis][lane]. Unused lanes are
-/// zero-area triangles at the origin, which the watertight test never reports.
+/// Four triangles, structure of arrays: v[vertex][axis][lane]. Unused lanes hold NaN
+/// vertices, which the watertight test never reports.
 struct alignas(16) TriangleBlock {
     static constexpr uint32_t kWidth = 4;
     float v[3][3][kWidth];
@@ -62,6 +62,12 @@ private:
 
 namespace detail {
 
+/// `x`, hidden from the optimiser so that a product is rounded on its own, never fused.
+inline __m128 opaque_float(__m128 x) {
+    __asm__("" : "+x"(x));
+    return x;
+}
+
 /// The watertight test's per-ray constants broadcast for four lanes.
 struct BlockRay {
     Ray ray;
@@ -76,7 +82,7 @@ struct BlockRay {
 /// same order; returns the lanes that hit and writes their t and barycentrics.
 inline uint32_t intersect_block(const TriangleBlock& b, const BlockRay& r, float tmin, float tmax, float* t_out,
                                 float* u_out, float* v_out) {
-#if defined(__AVX2__)
+#if defined(__SSE2__)
     // Sheared, translated vertices in float, as in the scalar test.
     auto sheared = [&](int vertex, __m128& x, __m128& y, __m128& z) {
         z = _mm_sub_ps(_mm_load_ps(b.v[vertex][r.w.kz]), r.oz);
@@ -87,40 +93,34 @@ inline uint32_t intersect_block(const TriangleBlock& b, const BlockRay& r, float
     sheared(0, ax, ay, az);
     sheared(1, bx, by, bz);
     sheared(2, cx, cy, cz);
-    // Edge functions in double: the float products are exact there, so an edge shared by
-    // two triangles gives exactly opposite values whatever the compiler fuses into FMAs.
+    // Edge functions as differences of two rounded products; opaque_float keeps the
+    // compiler from fusing them into an FMA, so the two triangles sharing an edge compute
+    // exactly opposite values for it (the heart of the watertightness argument).
     auto edge = [](__m128 px, __m128 py, __m128 qx, __m128 qy) {
-        return _mm256_sub_pd(_mm256_mul_pd(_mm256_cvtps_pd(px), _mm256_cvtps_pd(qy)),
-                             _mm256_mul_pd(_mm256_cvtps_pd(py), _mm256_cvtps_pd(qx)));
+        return _mm_sub_ps(opaque_float(_mm_mul_ps(px, qy)), opaque_float(_mm_mul_ps(py, qx)));
     };
-    const __m256d u = edge(cx, cy, bx, by);
-    const __m256d v = edge(ax, ay, cx, cy);
-    const __m256d w = edge(bx, by, ax, ay);
-    const __m256d zero = _mm256_setzero_pd();
-    // A miss has edge functions of both signs; zeros count as inside (watertightness).
-    const __m256d negative = _mm256_or_pd(
-        _mm256_or_pd(_mm256_cmp_pd(u, zero, _CMP_LT_OQ), _mm256_cmp_pd(v, zero, _CMP_LT_OQ)),
-        _mm256_cmp_pd(w, zero, _CMP_LT_OQ));
-    const __m256d positive = _mm256_or_pd(
-        _mm256_or_pd(_mm256_cmp_pd(u, zero, _CMP_GT_OQ), _mm256_cmp_pd(v, zero, _CMP_GT_OQ)),
-        _mm256_cmp_pd(w, zero, _CMP_GT_OQ));
-    int mask = ~_mm256_movemask_pd(_mm256_and_pd(negative, positive)) & 0xf;
+    const __m128 u = edge(cx, cy, bx, by);
+    const __m128 v = edge(ax, ay, cx, cy);
+    const __m128 w = edge(bx, by, ax, ay);
+    const __m128 zero = _mm_setzero_ps();
+    // A miss has edge functions of both signs; zeros count as inside.
+    const __m128 negative = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
+    const __m128 positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
+    int mask = ~_mm_movemask_ps(_mm_and_ps(negative, positive)) & 0xf;
     if (mask == 0) return 0;
-    const __m256d det = _mm256_add_pd(_mm256_add_pd(u, v), w);
-    const __m256d sz = _mm256_cvtps_pd(r.sz);
-    const __m256d t_scaled =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(u, _mm256_mul_pd(sz, _mm256_cvtps_pd(az))),
-                                    _mm256_mul_pd(v, _mm256_mul_pd(sz, _mm256_cvtps_pd(bz)))),
-                      _mm256_mul_pd(w, _mm256_mul_pd(sz, _mm256_cvtps_pd(cz))));
-    const __m256d inv_det = _mm256_div_pd(_mm256_set1_pd(1.0), det);
-    const __m128 t = _mm256_cvtpd_ps(_mm256_mul_pd(t_scaled, inv_det));
-    // det = 0 (zero-area triangles, unused lanes) gives an infinite or NaN t: rejected.
+    const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
+    const __m128 t_scaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(r.sz, az)), _mm_mul_ps(v, _mm_mul_ps(r.sz, bz))),
+                                       _mm_mul_ps(w, _mm_mul_ps(r.sz, cz)));
+    const __m128 inv_det = _mm_div_ps(_mm_set1_ps(1.0f), det);
+    const __m128 t = _mm_mul_ps(t_scaled, inv_det);
+    // det = 0 (zero-area triangles) gives an infinite or NaN t, unused (NaN) lanes a NaN t:
+    // both fail the interval test.
     const __m128 in_range = _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(tmin)), _mm_cmplt_ps(t, _mm_set1_ps(tmax)));
-    mask &= _mm_movemask_ps(in_range) & ~_mm256_movemask_pd(_mm256_cmp_pd(det, zero, _CMP_EQ_OQ));
+    mask &= _mm_movemask_ps(_mm_and_ps(in_range, _mm_cmpneq_ps(det, zero)));
     if (mask == 0) return 0;
     _mm_storeu_ps(t_out, t);
-    _mm_storeu_ps(u_out, _mm256_cvtpd_ps(_mm256_mul_pd(v, inv_det)));
-    _mm_storeu_ps(v_out, _mm256_cvtpd_ps(_mm256_mul_pd(w, inv_det)));
+    _mm_storeu_ps(u_out, _mm_mul_ps(v, inv_det));
+    _mm_storeu_ps(v_out, _mm_mul_ps(w, inv_det));
     return static_cast<uint32_t>(mask);
 #else
     uint32_t mask = 0;
@@ -171,7 +171,7 @@ bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept) const {
             return true;
         }
         return false;
-    });
+    }, [this](uint32_t leaf) { prefetch_bytes(&blocks_[leaf], sizeof(TriangleBlock)); });
 }
 
 }  // namespace glint

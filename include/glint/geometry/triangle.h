@@ -43,6 +43,18 @@ struct TriangleHit {
     return true;
 }
 
+/// `x`, hidden from the optimiser so that a product is rounded on its own, never fused
+/// into a multiply-add.
+[[nodiscard]] inline float opaque_float(float x) {
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    __asm__("" : "+x"(x));
+#else
+    volatile float v = x;
+    x = v;
+#endif
+    return x;
+}
+
 /// Per-ray constants of the watertight test: the axis kz where the direction is largest,
 /// the other two (swapped when d[kz] < 0 to keep the winding), and the shear that maps the
 /// direction onto +z.
@@ -75,21 +87,20 @@ struct WatertightRay {
     const float ax = a[w.kx] - w.sx * a[w.kz], ay = a[w.ky] - w.sy * a[w.kz];
     const float bx = b[w.kx] - w.sx * b[w.kz], by = b[w.ky] - w.sy * b[w.kz];
     const float cx = c[w.kx] - w.sx * c[w.kz], cy = c[w.ky] - w.sy * c[w.kz];
-    // The edge functions in double: products of floats are exact there, so the value for an
-    // edge shared by two triangles is exactly negated whether or not the compiler fuses
-    // multiply-adds (the paper falls back to double only when a float result is zero).
-    const double u = double(cx) * by - double(cy) * bx;
-    const double v = double(ax) * cy - double(ay) * cx;
-    const double wgt = double(bx) * ay - double(by) * ax;
-    if ((u < 0.0 || v < 0.0 || wgt < 0.0) && (u > 0.0 || v > 0.0 || wgt > 0.0)) return false;
-    const double det = u + v + wgt;
-    if (det == 0.0) return false;
-    const double sz = w.sz;
-    const double t_scaled = u * (sz * a[w.kz]) + v * (sz * b[w.kz]) + wgt * (sz * c[w.kz]);
-    const double inv_det = 1.0 / det;
-    const auto t = static_cast<float>(t_scaled * inv_det);
+    // Each edge function is a difference of two rounded products; opaque_float keeps the
+    // compiler from fusing them into an FMA, so an edge shared by two triangles gives
+    // exactly opposite values in the two (the paper's argument needs this).
+    const float u = opaque_float(cx * by) - opaque_float(cy * bx);
+    const float v = opaque_float(ax * cy) - opaque_float(ay * cx);
+    const float wgt = opaque_float(bx * ay) - opaque_float(by * ax);
+    if ((u < 0.0f || v < 0.0f || wgt < 0.0f) && (u > 0.0f || v > 0.0f || wgt > 0.0f)) return false;
+    const float det = u + v + wgt;
+    if (det == 0.0f) return false;
+    const float t_scaled = u * (w.sz * a[w.kz]) + v * (w.sz * b[w.kz]) + wgt * (w.sz * c[w.kz]);
+    const float inv_det = 1.0f / det;
+    const float t = t_scaled * inv_det;
     if (!(t > ray.tmin && t < ray.tmax)) return false;
-    out = {t, static_cast<float>(v * inv_det), static_cast<float>(wgt * inv_det)};
+    out = {t, v * inv_det, wgt * inv_det};
     return true;
 }
 
