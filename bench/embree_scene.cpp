@@ -17,9 +17,9 @@ EmbreeScene::EmbreeScene(const MeshData& mesh, int threads) {
     if (!device_) throw std::runtime_error("rtcNewDevice failed");
     rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeScene::monitor, this);
     scene_ = rtcNewScene(device_);
-    rtcSetSceneBuildQuality(scene_, getenv("EMB_MED") ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    rtcSetGeometryBuildQuality(geometry, getenv("EMB_MED") ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH);
+    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
     // Embree reads vertices with 16-byte loads: MeshData's vector has room behind the last
     // vertex only by chance, so the caller's arrays are shared through padded copies.
     vertices_.resize(mesh.positions.size() + 1);

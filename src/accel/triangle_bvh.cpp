@@ -2,7 +2,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <cstdlib>
 #include <limits>
 
 namespace glint {
@@ -20,9 +19,6 @@ void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_
     BvhBuildConfig config;
     config.max_leaf_size = TriangleBlock::kWidth;
     config.leaf_block_log2 = 2;
-    if (const char* e = std::getenv("GLINT_BINS")) config.bin_count = std::atoi(e);
-    if (const char* e = std::getenv("GLINT_TRAV")) config.traversal_cost = std::atof(e);
-    if (const char* e = std::getenv("GLINT_BLOCKLOG")) config.leaf_block_log2 = std::atoi(e);
     wide_.build(boxes, config);
     const std::span<const WideLeaf> leaves = wide_.leaves();
     const std::span<const uint32_t> order = wide_.primitive_order();

@@ -104,20 +104,25 @@ inline uint32_t intersect_block(const TriangleBlock& b, const BlockRay& r, float
     const __m128 w = edge(bx, by, ax, ay);
     const __m128 zero = _mm_setzero_ps();
     // A miss has edge functions of both signs; zeros count as inside.
-    const __m128 negative = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
-    const __m128 positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
-    int mask = ~_mm_movemask_ps(_mm_and_ps(negative, positive)) & 0xf;
+    const __m128 lowest = _mm_min_ps(_mm_min_ps(u, v), w), highest = _mm_max_ps(_mm_max_ps(u, v), w);
+    int mask = ~_mm_movemask_ps(_mm_and_ps(_mm_cmplt_ps(lowest, zero), _mm_cmpgt_ps(highest, zero))) & 0xf;
     if (mask == 0) return 0;
     const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
     const __m128 t_scaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(r.sz, az)), _mm_mul_ps(v, _mm_mul_ps(r.sz, bz))),
                                        _mm_mul_ps(w, _mm_mul_ps(r.sz, cz)));
+    // Compare t·|det| with the interval scaled by |det| and divide only for hits (the
+    // paper's deferred division). det = 0 (zero-area triangles) fails the strict test,
+    // unused (NaN) lanes fail every comparison.
+    const __m128 sign_mask = _mm_set1_ps(-0.0f);
+    const __m128 det_sign = _mm_and_ps(det, sign_mask);
+    const __m128 abs_det = _mm_andnot_ps(sign_mask, det);
+    const __m128 t_abs = _mm_xor_ps(t_scaled, det_sign);
+    const __m128 in_range = _mm_and_ps(_mm_cmpgt_ps(t_abs, _mm_mul_ps(abs_det, _mm_set1_ps(tmin))),
+                                       _mm_cmplt_ps(t_abs, _mm_mul_ps(abs_det, _mm_set1_ps(tmax))));
+    mask &= _mm_movemask_ps(_mm_and_ps(in_range, _mm_cmpgt_ps(abs_det, zero)));
+    if (mask == 0) return 0;
     const __m128 inv_det = _mm_div_ps(_mm_set1_ps(1.0f), det);
     const __m128 t = _mm_mul_ps(t_scaled, inv_det);
-    // det = 0 (zero-area triangles) gives an infinite or NaN t, unused (NaN) lanes a NaN t:
-    // both fail the interval test.
-    const __m128 in_range = _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(tmin)), _mm_cmplt_ps(t, _mm_set1_ps(tmax)));
-    mask &= _mm_movemask_ps(_mm_and_ps(in_range, _mm_cmpneq_ps(det, zero)));
-    if (mask == 0) return 0;
     _mm_storeu_ps(t_out, t);
     _mm_storeu_ps(u_out, _mm_mul_ps(v, inv_det));
     _mm_storeu_ps(v_out, _mm_mul_ps(w, inv_det));
