@@ -92,9 +92,4 @@ void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildCon
     order_ = std::move(binary.order);
 }
 
-void WideBvh::discard_leaf_ranges() {
-    leaves_ = {};
-    order_ = {};
-}
-
 }  // namespace glint

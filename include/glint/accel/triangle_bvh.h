@@ -55,7 +55,17 @@ public:
         return wide_.memory_bytes() + blocks_.size() * sizeof(TriangleBlock);
     }
 
+    /// A leaf holds at most this many blocks (the SAH decides, counting whole blocks).
+    /// Measured on the shared meshes: two or four blocks save 10% memory but cost up to
+    /// 15% on incoherent rays, so one block it is.
+    static constexpr uint32_t kMaxLeafBlocks = 1;
+
 private:
+    /// The leaf reference handed to the traversal: first block << 2 | (block count - 1).
+    static uint32_t encode_leaf(uint32_t first_block, uint32_t block_count) {
+        return first_block << 2 | (block_count - 1);
+    }
+
     WideBvh wide_;
     std::vector<TriangleBlock> blocks_;
 };
@@ -150,33 +160,42 @@ template <bool AnyHit, typename Filter>
 bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept) const {
     constexpr bool kFiltered = !std::is_same_v<std::decay_t<Filter>, AcceptAllHits>;
     const detail::BlockRay block_ray(ray);
-    return wide_.traverse<AnyHit>(ray, [&](uint32_t leaf, Ray& r) {
-        const TriangleBlock& block = blocks_[leaf];
-        float t[4], u[4], v[4];
-        uint32_t mask = detail::intersect_block(block, block_ray, r.tmin, r.tmax, t, u, v);
-        // Take the nearest lane that the filter accepts (any accepted lane for AnyHit).
-        while (mask) {
-            auto best = static_cast<uint32_t>(std::countr_zero(mask));
-            if constexpr (!AnyHit)
-                for (uint32_t m = mask & (mask - 1); m; m &= m - 1) {
-                    const auto i = static_cast<uint32_t>(std::countr_zero(m));
-                    if (t[i] < t[best]) best = i;
+    auto intersect_leaf = [&](uint32_t leaf, Ray& r) {
+        bool found = false;
+        const TriangleBlock* const first = &blocks_[leaf >> 2];
+        for (const TriangleBlock* block = first; block != first + (leaf & 3) + 1; ++block) {
+            float t[4], u[4], v[4];
+            uint32_t mask = detail::intersect_block(*block, block_ray, r.tmin, r.tmax, t, u, v);
+            // Take the nearest lane that the filter accepts (any accepted lane for AnyHit).
+            while (mask) {
+                auto best = static_cast<uint32_t>(std::countr_zero(mask));
+                if constexpr (!AnyHit)
+                    for (uint32_t m = mask & (mask - 1); m; m &= m - 1) {
+                        const auto i = static_cast<uint32_t>(std::countr_zero(m));
+                        if (t[i] < t[best]) best = i;
+                    }
+                if constexpr (kFiltered) {
+                    if (!accept(block->triangle[best], u[best], v[best])) {
+                        mask &= ~(1u << best);
+                        continue;
+                    }
                 }
-            if constexpr (kFiltered) {
-                if (!accept(block.triangle[best], u[best], v[best])) {
-                    mask &= ~(1u << best);
-                    continue;
-                }
+                r.tmax = t[best];
+                hit.t = t[best];
+                hit.primitive = block->triangle[best];
+                hit.u = u[best];
+                hit.v = v[best];
+                if constexpr (AnyHit) return true;
+                found = true;
+                break;
             }
-            r.tmax = t[best];
-            hit.t = t[best];
-            hit.primitive = block.triangle[best];
-            hit.u = u[best];
-            hit.v = v[best];
-            return true;
         }
-        return false;
-    }, [this](uint32_t leaf) { prefetch_bytes(&blocks_[leaf], sizeof(TriangleBlock)); });
+        return found;
+    };
+    auto prefetch_leaf = [this](uint32_t leaf) {
+        prefetch_bytes(&blocks_[leaf >> 2], ((leaf & 3) + 1) * sizeof(TriangleBlock));
+    };
+    return wide_.traverse<AnyHit>(ray, intersect_leaf, prefetch_leaf);
 }
 
 }  // namespace glint

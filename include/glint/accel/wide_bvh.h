@@ -79,9 +79,11 @@ public:
     /// Leaf entries in traversal order, mapping to the caller's primitive indices.
     [[nodiscard]] std::span<const uint32_t> primitive_order() const { return order_; }
     [[nodiscard]] Bounds3 bounds() const { return bounds_; }
-    /// Frees leaves() and primitive_order(), for callers that copied their primitives into
-    /// leaf order and find leaf k by its index alone.
-    void discard_leaf_ranges();
+    /// For callers that copied their primitives into leaf order: replaces every leaf index
+    /// in the nodes by `leaf_payload(leaf) -> uint32_t` (below 2^31), which traverse() then
+    /// hands to the leaf callback instead, and frees leaves() and primitive_order().
+    template <typename LeafPayload>
+    void encode_leaves(LeafPayload&& leaf_payload);
     [[nodiscard]] std::size_t memory_bytes() const {
         return nodes_.size() * sizeof(WideNode) + leaves_.size() * sizeof(WideLeaf) + order_.size() * sizeof(uint32_t);
     }
@@ -96,6 +98,15 @@ private:
     std::vector<uint32_t> order_;
     Bounds3 bounds_;
 };
+
+template <typename LeafPayload>
+void WideBvh::encode_leaves(LeafPayload&& leaf_payload) {
+    for (WideNode& node : nodes_)
+        for (uint32_t& child : node.child)
+            if (child & WideNode::kLeafBit) child = WideNode::kLeafBit | leaf_payload(child & ~WideNode::kLeafBit);
+    leaves_ = {};
+    order_ = {};
+}
 
 inline WideRay::WideRay(const Ray& ray) {
     for (int a = 0; a < 3; ++a) {

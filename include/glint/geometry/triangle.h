@@ -67,9 +67,11 @@ struct WatertightRay {
         kx = kz == 2 ? 0 : kz + 1;
         ky = kx == 2 ? 0 : kx + 1;
         if (d[kz] < 0.0f) std::swap(kx, ky);
-        sx = d[kx] / d[kz];
-        sy = d[ky] / d[kz];
+        // One division: the shear constants are per ray, shared by every triangle it meets,
+        // so their rounding cannot open a gap between neighbours.
         sz = 1.0f / d[kz];
+        sx = d[kx] * sz;
+        sy = d[ky] * sz;
     }
 };
 
