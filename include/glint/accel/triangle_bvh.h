@@ -21,7 +21,7 @@ namespace glint {
 
 /// Four triangles, structure of arrays: v[vertex][axis][lane]. Unused lanes hold NaN
 /// vertices, which the watertight test never reports.
-struct alignas(16) TriangleBlock {
+struct alignas(32) TriangleBlock {
     static constexpr uint32_t kWidth = 4;
     float v[3][3][kWidth];
     uint32_t triangle[kWidth];
@@ -163,7 +163,8 @@ bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept) const {
     auto intersect_leaf = [&](uint32_t leaf, Ray& r) {
         bool found = false;
         const TriangleBlock* const first = &blocks_[leaf >> 2];
-        for (const TriangleBlock* block = first; block != first + (leaf & 3) + 1; ++block) {
+        const uint32_t block_count = kMaxLeafBlocks == 1 ? 1 : (leaf & 3) + 1;
+        for (const TriangleBlock* block = first; block != first + block_count; ++block) {
             float t[4], u[4], v[4];
             uint32_t mask = detail::intersect_block(*block, block_ray, r.tmin, r.tmax, t, u, v);
             // Take the nearest lane that the filter accepts (any accepted lane for AnyHit).
@@ -192,9 +193,7 @@ bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept) const {
         }
         return found;
     };
-    auto prefetch_leaf = [this](uint32_t leaf) {
-        prefetch_bytes(&blocks_[leaf >> 2], ((leaf & 3) + 1) * sizeof(TriangleBlock));
-    };
+    auto prefetch_leaf = [this](uint32_t leaf) { prefetch_lines<sizeof(TriangleBlock)>(&blocks_[leaf >> 2]); };
     return wide_.traverse<AnyHit>(ray, intersect_leaf, prefetch_leaf);
 }
 

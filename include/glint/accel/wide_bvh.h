@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #if defined(__AVX2__)
@@ -55,10 +56,14 @@ struct NoLeafPrefetch {
     constexpr void operator()(uint32_t) const {}
 };
 
-/// Starts loading the cache lines of [p, p + bytes) into L1.
-inline void prefetch_bytes(const void* p, std::size_t bytes) {
+/// Starts loading into L1 the cache lines of an object of `Bytes` bytes at `p`, which is
+/// aligned to 32 bytes (so Bytes / 64 + 1 lines at most; one prefetch per line).
+template <std::size_t Bytes>
+inline void prefetch_lines(const void* p) {
     const char* c = static_cast<const char*>(p);
-    for (std::size_t offset = 0; offset < bytes; offset += 64) __builtin_prefetch(c + offset, 0, 3);
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (__builtin_prefetch(c + 64 * I, 0, 3), ...);
+    }(std::make_index_sequence<(Bytes + 63) / 64>{});
 }
 
 class WideBvh {
@@ -161,6 +166,7 @@ template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf>
 bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf) const {
     if (nodes_.empty()) return false;
     const WideRay r(ray);
+    const WideNode* const nodes = nodes_.data();
     struct Entry {
         uint32_t ref;
         float t_enter;
@@ -179,7 +185,7 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
         uint32_t ref = entry.ref;
         bool reached_leaf = true;
         while (!(ref & WideNode::kLeafBit)) {
-            const WideNode& node = nodes_[ref];
+            const WideNode& node = nodes[ref];
             uint32_t mask = intersect_node(node, r, ray.tmin, ray.tmax, t_enter);
             if (mask == 0) {
                 reached_leaf = false;
@@ -208,7 +214,7 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
                 if (c & WideNode::kLeafBit)
                     prefetch_leaf(c & ~WideNode::kLeafBit);
                 else
-                    prefetch_bytes(&nodes_[c], sizeof(WideNode));
+                    prefetch_lines<sizeof(WideNode)>(&nodes[c]);
             }
             const auto second = static_cast<uint32_t>(std::countr_zero(mask));
             mask &= mask - 1;
