@@ -94,7 +94,9 @@ public:
     }
 
 private:
-    /// Slab test of the eight children; returns the hit mask and writes their entry distances.
+    /// Slab test of the eight children; returns the hit mask and, with StoreEnter, writes
+    /// their entry distances (shadow rays do not sort, so they skip the store).
+    template <bool StoreEnter>
     [[nodiscard]] static uint32_t intersect_node(const WideNode& node, const WideRay& r, float tmin, float tmax,
                                                  float* t_enter);
 
@@ -130,6 +132,7 @@ inline WideRay::WideRay(const Ray& ray) {
 /// traversal needs conservative box tests).
 inline constexpr float kWideBoxSlack = 1.0f + 0x1p-21f;
 
+template <bool StoreEnter>
 inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, float tmin, float tmax,
                                         float* t_enter) {
 #if defined(__AVX2__)
@@ -142,7 +145,7 @@ inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, 
     const __m256 near_z = plane_t(2, r.near_plane[2]), far_z = plane_t(2, r.near_plane[2] ^ 1);
     const __m256 enter = _mm256_max_ps(_mm256_max_ps(near_x, near_y), _mm256_max_ps(near_z, _mm256_set1_ps(tmin)));
     const __m256 exit = _mm256_min_ps(_mm256_min_ps(far_x, far_y), _mm256_min_ps(far_z, _mm256_set1_ps(tmax)));
-    _mm256_storeu_ps(t_enter, enter);
+    if constexpr (StoreEnter) _mm256_storeu_ps(t_enter, enter);
     const __m256 hit = _mm256_cmp_ps(enter, _mm256_mul_ps(exit, _mm256_set1_ps(kWideBoxSlack)), _CMP_LE_OQ);
     return static_cast<uint32_t>(_mm256_movemask_ps(hit));
 #else
@@ -155,7 +158,7 @@ inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, 
             enter = t_near > enter ? t_near : enter;
             exit = t_far < exit ? t_far : exit;
         }
-        t_enter[i] = enter;
+        if constexpr (StoreEnter) t_enter[i] = enter;
         if (enter <= exit * kWideBoxSlack) mask |= 1u << i;
     }
     return mask;
@@ -186,7 +189,7 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
         bool reached_leaf = true;
         while (!(ref & WideNode::kLeafBit)) {
             const WideNode& node = nodes[ref];
-            uint32_t mask = intersect_node(node, r, ray.tmin, ray.tmax, t_enter);
+            uint32_t mask = intersect_node<!AnyHit>(node, r, ray.tmin, ray.tmax, t_enter);
             if (mask == 0) {
                 reached_leaf = false;
                 break;
