@@ -4,15 +4,14 @@ namespace glint {
 
 namespace {
 
-/// Turns binary nodes into wide ones, depth first, so that a wide node's children and
-/// the leaves below it lie close together in memory.
+/// Turns binary nodes into wide ones, depth first.
 class Collapser {
 public:
     Collapser(const BinaryBvh& binary, std::vector<WideNode>& nodes, std::vector<WideLeaf>& leaves)
         : binary_(binary), nodes_(nodes), leaves_(leaves) {}
 
-    /// Creates the wide node that replaces binary node `root` and returns its index.
-    uint32_t collapse(uint32_t root) {
+    /// Fills wide node `index` with the subtree of binary node `root`.
+    void fill(uint32_t index, uint32_t root) {
         uint32_t slots[WideNode::kWidth];
         uint32_t used = 0;
         const BvhNode& r = binary_.nodes[root];
@@ -39,31 +38,32 @@ public:
             slots[best] = first;
             slots[used++] = first + 1;
         }
-        const auto index = static_cast<uint32_t>(nodes_.size());
-        nodes_.emplace_back();
-        {
-            WideNode& w = nodes_[index];
-            for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
-                const Bounds3 b = i < used ? binary_.nodes[slots[i]].bounds : Bounds3{};
-                for (int a = 0; a < 3; ++a) {
-                    w.planes[2 * a][i] = b.lo[a];
-                    w.planes[2 * a + 1][i] = b.hi[a];
-                }
-                w.child[i] = WideNode::kLeafBit;  // unused slots: never entered
+        // Leaves first, then the inner children side by side: a node's leaves and its
+        // child nodes each lie together in memory, which the hardware prefetcher likes.
+        uint32_t inner = 0;
+        for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
+            const Bounds3 b = i < used ? binary_.nodes[slots[i]].bounds : Bounds3{};
+            for (int a = 0; a < 3; ++a) {
+                nodes_[index].planes[2 * a][i] = b.lo[a];
+                nodes_[index].planes[2 * a + 1][i] = b.hi[a];
             }
-        }
-        for (uint32_t i = 0; i < used; ++i) {
+            nodes_[index].child[i] = WideNode::kLeafBit;  // unused slots: never entered
+            if (i >= used) continue;
             const BvhNode& n = binary_.nodes[slots[i]];
-            uint32_t child;
             if (n.is_leaf()) {
-                child = WideNode::kLeafBit | static_cast<uint32_t>(leaves_.size());
+                nodes_[index].child[i] = WideNode::kLeafBit | static_cast<uint32_t>(leaves_.size());
                 leaves_.push_back({n.index, n.count});
             } else {
-                child = collapse(slots[i]);
+                ++inner;
             }
-            nodes_[index].child[i] = child;  // nodes_ may have grown: index again
         }
-        return index;
+        const auto first_child = static_cast<uint32_t>(nodes_.size());
+        nodes_.resize(nodes_.size() + inner);
+        uint32_t next = first_child;
+        for (uint32_t i = 0; i < used; ++i)
+            if (!binary_.nodes[slots[i]].is_leaf()) nodes_[index].child[i] = next++;
+        for (uint32_t i = 0; i < used; ++i)
+            if (!binary_.nodes[slots[i]].is_leaf()) fill(nodes_[index].child[i], slots[i]);
     }
 
 private:
@@ -87,7 +87,8 @@ void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildCon
     // Each wide node absorbs at least one binary inner node (one per binary leaf, minus one).
     nodes_.reserve(binary_leaves);
     leaves_.reserve(binary_leaves);
-    Collapser(binary, nodes_, leaves_).collapse(0);
+    nodes_.emplace_back();
+    Collapser(binary, nodes_, leaves_).fill(0, 0);
     nodes_.shrink_to_fit();
     order_ = std::move(binary.order);
 }
