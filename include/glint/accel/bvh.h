@@ -28,10 +28,13 @@ public:
     template <bool AnyHit, typename IntersectPrimitive>
     bool traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const;
 
+    /// Node 0 is the root; empty when there is nothing to hit.
     [[nodiscard]] std::span<const BvhNode> nodes() const { return nodes_; }
     /// Leaf entries in traversal order, mapping to the caller's primitive indices.
     [[nodiscard]] std::span<const uint32_t> primitive_order() const { return order_; }
+    /// Box of all primitives.
     [[nodiscard]] Bounds3 bounds() const { return nodes_.empty() ? Bounds3{} : nodes_[0].bounds; }
+    /// Bytes of nodes and primitive order.
     [[nodiscard]] std::size_t memory_bytes() const {
         return nodes_.size() * sizeof(BvhNode) + order_.size() * sizeof(uint32_t);
     }

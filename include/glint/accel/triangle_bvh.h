@@ -46,9 +46,13 @@ public:
     template <bool AnyHit, typename Filter = AcceptAllHits>
     bool intersect(Ray& ray, Hit& hit, Filter&& accept = {}) const;
 
+    /// True before build() (or after building over no triangles).
     [[nodiscard]] bool empty() const { return blocks_.empty(); }
+    /// Box of all triangles.
     [[nodiscard]] Bounds3 bounds() const { return wide_.bounds(); }
+    /// The nodes; their leaf references are encoded block ranges (see encode_leaf).
     [[nodiscard]] const WideBvh& wide_bvh() const { return wide_; }
+    /// The leaf blocks, in traversal order.
     [[nodiscard]] std::span<const TriangleBlock> blocks() const { return blocks_; }
     /// Bytes of nodes and leaf blocks (the mesh's own arrays not included).
     [[nodiscard]] std::size_t memory_bytes() const {

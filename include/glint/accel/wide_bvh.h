@@ -48,6 +48,7 @@ struct WideLeaf {
 struct WideRay {
     Vec3 inv_dir, origin_inv_dir;
     uint32_t near_plane[3];
+    /// Precomputes the constants for `ray`.
     explicit WideRay(const Ray& ray);
 };
 
@@ -79,16 +80,20 @@ public:
     template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf = NoLeafPrefetch>
     bool traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf = {}) const;
 
+    /// Node 0 is the root; empty when there is nothing to hit.
     [[nodiscard]] std::span<const WideNode> nodes() const { return nodes_; }
+    /// Leaf k's primitives, in the order traversal meets the leaves.
     [[nodiscard]] std::span<const WideLeaf> leaves() const { return leaves_; }
     /// Leaf entries in traversal order, mapping to the caller's primitive indices.
     [[nodiscard]] std::span<const uint32_t> primitive_order() const { return order_; }
+    /// Box of all primitives.
     [[nodiscard]] Bounds3 bounds() const { return bounds_; }
     /// For callers that copied their primitives into leaf order: replaces every leaf index
     /// in the nodes by `leaf_payload(leaf) -> uint32_t` (below 2^31), which traverse() then
     /// hands to the leaf callback instead, and frees leaves() and primitive_order().
     template <typename LeafPayload>
     void encode_leaves(LeafPayload&& leaf_payload);
+    /// Bytes of nodes, leaf ranges and primitive order.
     [[nodiscard]] std::size_t memory_bytes() const {
         return nodes_.size() * sizeof(WideNode) + leaves_.size() * sizeof(WideLeaf) + order_.size() * sizeof(uint32_t);
     }
