@@ -17,6 +17,8 @@
 #include <memory>
 #include <random>
 
+#include <tbb/task_arena.h>
+
 namespace glint {
 namespace {
 
@@ -280,6 +282,58 @@ TEST(AlphaMask, CutOutHitsAreSkippedByEveryQuery) {
     EXPECT_FLOAT_EQ(hit.t, 1.0f);
     EXPECT_FALSE(mesh.occluded(Ray(Vec3(0.25f, 0.5f, 0.0f), Vec3(0, 0, 1), 0.0f, 1.5f)));
     EXPECT_TRUE(mesh.occluded(Ray(Vec3(0.75f, 0.5f, 0.0f), Vec3(0, 0, 1), 0.0f, 1.5f)));
+}
+
+/// Boxes as primitives: the BVHs know only bounds and a leaf callback, so any primitive works.
+TEST(ShapeAgnostic, BinaryAndWideBvhsAgreeWithBruteForceOverBoxes) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> uniform(-10.0f, 10.0f), size(0.05f, 1.5f);
+    std::vector<Bounds3> boxes(3000);
+    for (Bounds3& b : boxes) {
+        const Vec3 lo(uniform(rng), uniform(rng), uniform(rng));
+        b = Bounds3(lo, lo + Vec3(size(rng), size(rng), size(rng)));
+    }
+    boxes[7] = Bounds3{};  // an empty box is left out
+    Bvh binary;
+    binary.build(boxes);
+    WideBvh wide;
+    wide.build(boxes);
+    auto hit_box = [&](uint32_t i, Ray& ray) {
+        float enter, exit;
+        const Vec3 inv(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z);
+        if (!boxes[i].intersect(ray.origin, inv, ray.tmin, ray.tmax, enter, exit) || enter <= ray.tmin) return false;
+        ray.tmax = enter;
+        return true;
+    };
+    for (const Ray& ray : random_rays(Bounds3(Vec3(-10.0f), Vec3(10.0f)), 2000, 9)) {
+        Ray reference = ray, via_binary = ray, via_wide = ray;
+        const bool expected = BruteForce(uint32_t(boxes.size())).traverse<false>(reference, hit_box);
+        EXPECT_EQ(binary.traverse<false>(via_binary, hit_box), expected);
+        const bool wide_hit = wide.traverse<false>(via_wide, [&](uint32_t leaf, Ray& r) {
+            bool any = false;
+            const WideLeaf l = wide.leaves()[leaf];
+            for (uint32_t k = l.first; k < l.first + l.count; ++k) any |= hit_box(wide.primitive_order()[k], r);
+            return any;
+        });
+        EXPECT_EQ(wide_hit, expected);
+        EXPECT_EQ(via_binary.tmax, reference.tmax);
+        EXPECT_EQ(via_wide.tmax, reference.tmax);
+    }
+}
+
+TEST(Build, TheTreeDoesNotDependOnTheThreadCount) {
+    const MeshData sphere = icosphere(5);  // 20,480 triangles: big enough for parallel tasks
+    auto build_with = [&](int threads) {
+        TriangleBvh bvh;
+        tbb::task_arena(threads).execute([&] { bvh.build(sphere.positions, sphere.indices); });
+        return bvh;
+    };
+    const TriangleBvh one = build_with(1), two = build_with(2);
+    ASSERT_EQ(one.blocks().size(), two.blocks().size());
+    ASSERT_EQ(one.wide_bvh().nodes().size(), two.wide_bvh().nodes().size());
+    for (size_t i = 0; i < one.blocks().size(); ++i)
+        for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane)
+            ASSERT_EQ(one.blocks()[i].triangle[lane], two.blocks()[i].triangle[lane]) << "block " << i;
 }
 
 }  // namespace
