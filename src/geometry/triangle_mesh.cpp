@@ -45,24 +45,23 @@ TriangleMesh::TriangleMesh(MeshData data, std::string name) : data_(std::move(da
 }
 
 void TriangleMesh::prepare() {
-    if (!bvh_.nodes().empty()) return;
-    std::vector<Bounds3> boxes(triangle_count());
-    for (size_t t = 0; t < boxes.size(); ++t) {
-        for (int k = 0; k < 3; ++k) boxes[t].extend(data_.positions[data_.indices[3 * t + k]]);
-    }
-    bvh_.build(boxes);
+    if (!bvh_.empty()) return;
+    bvh_.build(data_.positions, data_.indices);
+}
+
+bool TriangleMesh::passes_alpha(uint32_t triangle, float b1, float b2) const {
+    const uint32_t* idx = &data_.indices[3 * size_t(triangle)];
+    const Vec2 uv = data_.uvs[idx[0]] * (1.0f - b1 - b2) + data_.uvs[idx[1]] * b1 + data_.uvs[idx[2]] * b2;
+    return alpha_mask_->alpha(uv) >= alpha_cutoff_;
 }
 
 bool TriangleMesh::intersect_triangle(uint32_t triangle, Ray& ray, Hit& hit) const {
     const uint32_t* idx = &data_.indices[3 * size_t(triangle)];
     TriangleHit th;
-    if (!glint::intersect_triangle(ray, data_.positions[idx[0]], data_.positions[idx[1]], data_.positions[idx[2]], th))
+    if (!intersect_triangle_watertight(ray, WatertightRay(ray.direction), data_.positions[idx[0]],
+                                       data_.positions[idx[1]], data_.positions[idx[2]], th))
         return false;
-    if (alpha_mask_ && !data_.uvs.empty()) {
-        const float b0 = 1.0f - th.v - th.w;
-        const Vec2 uv = data_.uvs[idx[0]] * b0 + data_.uvs[idx[1]] * th.v + data_.uvs[idx[2]] * th.w;
-        if (alpha_mask_->alpha(uv) < alpha_cutoff_) return false;
-    }
+    if (has_alpha_mask() && !passes_alpha(triangle, th.v, th.w)) return false;
     ray.tmax = th.t;
     hit.t = th.t;
     hit.primitive = triangle;
@@ -72,13 +71,15 @@ bool TriangleMesh::intersect_triangle(uint32_t triangle, Ray& ray, Hit& hit) con
 }
 
 bool TriangleMesh::intersect(Ray& ray, Hit& hit) const {
-    return bvh_.traverse<false>(ray, [&](uint32_t tri, Ray& r) { return intersect_triangle(tri, r, hit); });
+    if (!has_alpha_mask()) return bvh_.intersect<false>(ray, hit);
+    return bvh_.intersect<false>(ray, hit, [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); });
 }
 
 bool TriangleMesh::occluded(const Ray& ray) const {
     Ray r = ray;
     Hit scratch;
-    return bvh_.traverse<true>(r, [&](uint32_t tri, Ray& rr) { return intersect_triangle(tri, rr, scratch); });
+    if (!has_alpha_mask()) return bvh_.intersect<true>(r, scratch);
+    return bvh_.intersect<true>(r, scratch, [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); });
 }
 
 void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {

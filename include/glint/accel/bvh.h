@@ -1,10 +1,12 @@
 #pragma once
-/// \file Bounding volume hierarchy over abstract primitives.
+/// \file Binary bounding volume hierarchy over abstract primitives.
 ///
 /// The BVH knows nothing of shapes: it is built from a span of primitive bounds and
 /// traversed with a leaf callback that intersects one primitive (madmann91/bvh style).
-/// Scenes use it over objects (top level) and meshes use it over triangles (bottom level).
+/// Scenes use it over objects (the top level); triangle meshes use the 8-wide
+/// `TriangleBvh` (see wide_bvh.h), which is much faster for many small primitives.
 
+#include "glint/accel/sah_builder.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
 
@@ -15,29 +17,9 @@
 
 namespace glint {
 
-struct BvhBuildConfig {
-    /// Leaves never hold more primitives than this.
-    uint32_t max_leaf_size = 8;
-    /// Surface-area-heuristic cost of one node traversal relative to one primitive test.
-    float traversal_cost = 1.0f;
-    /// Number of SAH bins per axis.
-    uint32_t bin_count = 16;
-};
-
-/// Flat node, 32 bytes: an inner node stores the index of its first child (the second
-/// child follows it); a leaf stores its first entry in primitive_order() and a count.
-struct BvhNode {
-    Bounds3 bounds;
-    uint32_t index = 0;
-    uint32_t count = 0;  ///< 0 for inner nodes
-    [[nodiscard]] bool is_leaf() const { return count != 0; }
-};
-static_assert(sizeof(BvhNode) == 32);
-
 class Bvh {
 public:
-    /// Binned SAH build (Wald 2007, "On fast Construction of SAH-based Bounding Volume
-    /// Hierarchies"); empty and degenerate bounds are allowed.
+    /// Binned SAH build (see build_binary_bvh); empty and degenerate bounds are allowed.
     void build(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config = {});
 
     /// Visit leaves front to back. `intersect_primitive(uint32_t primitive, Ray& ray) -> bool`
@@ -46,10 +28,13 @@ public:
     template <bool AnyHit, typename IntersectPrimitive>
     bool traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const;
 
+    /// Node 0 is the root; empty when there is nothing to hit.
     [[nodiscard]] std::span<const BvhNode> nodes() const { return nodes_; }
     /// Leaf entries in traversal order, mapping to the caller's primitive indices.
     [[nodiscard]] std::span<const uint32_t> primitive_order() const { return order_; }
+    /// Box of all primitives.
     [[nodiscard]] Bounds3 bounds() const { return nodes_.empty() ? Bounds3{} : nodes_[0].bounds; }
+    /// Bytes of nodes and primitive order.
     [[nodiscard]] std::size_t memory_bytes() const {
         return nodes_.size() * sizeof(BvhNode) + order_.size() * sizeof(uint32_t);
     }

@@ -4,6 +4,9 @@
 #include "glint/math/ray.h"
 #include "glint/math/vec3.h"
 
+#include <cmath>
+#include <utility>
+
 namespace glint {
 
 /// Result of a ray-triangle test: t and the barycentric weights (v, w) of v1 and v2
@@ -37,6 +40,69 @@ struct TriangleHit {
     const float w = -dot(e1, q) * inv_s;
     if (w < 0.0f || v + w > 1.0f) return false;
     out = {t, v, w};
+    return true;
+}
+
+/// `x`, hidden from the optimiser so that a product is rounded on its own, never fused
+/// into a multiply-add.
+[[nodiscard]] inline float opaque_float(float x) {
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    __asm__("" : "+x"(x));
+#else
+    volatile float v = x;
+    x = v;
+#endif
+    return x;
+}
+
+/// Per-ray constants of the watertight test: the axis kz where the direction is largest,
+/// the other two (swapped when d[kz] < 0 to keep the winding), and the shear that maps the
+/// direction onto +z.
+struct WatertightRay {
+    int kx, ky, kz;
+    float sx, sy, sz;
+    explicit WatertightRay(const Vec3& d) {
+        const Vec3 ad = abs(d);
+        kz = max_axis(ad);
+        kx = kz == 2 ? 0 : kz + 1;
+        ky = kx == 2 ? 0 : kx + 1;
+        if (d[kz] < 0.0f) std::swap(kx, ky);
+        // One division: the shear constants are per ray, shared by every triangle it meets,
+        // so their rounding cannot open a gap between neighbours.
+        sz = 1.0f / d[kz];
+        sx = d[kx] * sz;
+        sy = d[ky] * sz;
+    }
+};
+
+/// Watertight ray-triangle test (Woop, Benthin, Wald 2013, "Watertight Ray/Triangle
+/// Intersection", JCGT 2(1)): the vertices are moved into a frame where the ray is the +z
+/// axis, and the 2D edge functions U, V, W decide inside/outside. Two triangles sharing an
+/// edge compute the same edge function for it, so no ray slips between them; an edge
+/// function that rounds to zero counts as inside, so rays through edges and vertices hit
+/// (possibly both neighbours). Accepts t strictly inside (tmin, tmax), either winding, and
+/// never reports a zero-area triangle (U + V + W = 0). The SIMD leaf test in
+/// triangle_bvh.cpp is the same arithmetic, four triangles at a time.
+[[nodiscard]] inline bool intersect_triangle_watertight(const Ray& ray, const WatertightRay& w, const Vec3& v0,
+                                                        const Vec3& v1, const Vec3& v2, TriangleHit& out) {
+    const Vec3 a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;
+    const float ax = a[w.kx] - w.sx * a[w.kz], ay = a[w.ky] - w.sy * a[w.kz];
+    const float bx = b[w.kx] - w.sx * b[w.kz], by = b[w.ky] - w.sy * b[w.kz];
+    const float cx = c[w.kx] - w.sx * c[w.kz], cy = c[w.ky] - w.sy * c[w.kz];
+    // Each edge function is a difference of two rounded products; opaque_float keeps the
+    // compiler from fusing them into an FMA, so an edge shared by two triangles gives
+    // exactly opposite values in the two (the paper's argument needs this).
+    const float u = opaque_float(cx * by) - opaque_float(cy * bx);
+    const float v = opaque_float(ax * cy) - opaque_float(ay * cx);
+    const float wgt = opaque_float(bx * ay) - opaque_float(by * ax);
+    if ((u < 0.0f || v < 0.0f || wgt < 0.0f) && (u > 0.0f || v > 0.0f || wgt > 0.0f)) return false;
+    const float det = u + v + wgt;
+    if (det == 0.0f) return false;
+    const float t_scaled = u * (w.sz * a[w.kz]) + v * (w.sz * b[w.kz]) + wgt * (w.sz * c[w.kz]);
+    const float inv_det = 1.0f / det;
+    const float t = t_scaled * inv_det;
+    if (!(t > ray.tmin && t < ray.tmax)) return false;
+    out = {t, v * inv_det, wgt * inv_det};
     return true;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-/// \file Indexed triangle mesh: flat arrays plus its own BVH.
+/// \file Indexed triangle mesh: flat arrays plus its own 8-wide BVH (the bottom level).
 
-#include "glint/accel/bvh.h"
+#include "glint/accel/triangle_bvh.h"
 #include "glint/geometry/shape.h"
 #include "glint/materials/texture.h"
 #include "glint/math/vec2.h"
@@ -43,21 +43,28 @@ public:
     [[nodiscard]] std::size_t triangle_count() const { return data_.indices.size() / 3; }
     [[nodiscard]] const MeshData& data() const { return data_; }
     [[nodiscard]] const std::string& name() const { return name_; }
-    [[nodiscard]] const Bvh& bvh() const { return bvh_; }
+    /// The bottom-level structure (empty before prepare()).
+    [[nodiscard]] const TriangleBvh& bvh() const { return bvh_; }
 
     /// Cut-out mask (glTF alphaMode MASK): hits where `alpha->alpha(uv) < cutoff` are
     /// skipped by every query, shadow rays too. Needs uvs; null removes the mask.
     void set_alpha_mask(const Texture* alpha, float cutoff) { alpha_mask_ = alpha; alpha_cutoff_ = cutoff; }
     [[nodiscard]] const Texture* alpha_mask() const { return alpha_mask_; }
 
-    /// Test one triangle (the BLAS leaf and the brute-force reference share it).
+    /// Test one triangle with the watertight test, alpha mask included: the scalar
+    /// reference for the BVH's SIMD leaves (brute-force tests call it).
     bool intersect_triangle(uint32_t triangle, Ray& ray, Hit& hit) const;
 
 private:
+    /// The mask applies only to meshes with texture coordinates.
+    [[nodiscard]] bool has_alpha_mask() const { return alpha_mask_ != nullptr && !data_.uvs.empty(); }
+    /// Whether the alpha mask keeps the hit at barycentrics (b1, b2) of `triangle`.
+    [[nodiscard]] bool passes_alpha(uint32_t triangle, float b1, float b2) const;
+
     MeshData data_;
     std::string name_;
     Bounds3 bounds_;
-    Bvh bvh_;
+    TriangleBvh bvh_;
     const Texture* alpha_mask_ = nullptr;
     float alpha_cutoff_ = 0.5f;
 };

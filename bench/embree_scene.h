@@ -1,0 +1,43 @@
+#pragma once
+/// \file Embree 3 on the same mesh: the reference glint-bench compares Glint against.
+
+#include "bench_rays.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <cstddef>
+#include <vector>
+
+namespace glint::bench {
+
+/// An Embree device limited to `threads` build threads, with one triangle geometry built
+/// with RTC_BUILD_QUALITY_HIGH over the caller's arrays (shared, so not counted as memory).
+class EmbreeScene {
+public:
+    EmbreeScene(const MeshData& mesh, int threads);
+    ~EmbreeScene();
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+    /// Builds (rtcCommitScene) and returns the wall time in milliseconds.
+    double build();
+    /// Bytes Embree allocated for the scene and kept after the build (memory monitor).
+    [[nodiscard]] std::size_t bytes() const { return static_cast<std::size_t>(retained_); }
+
+    /// Closest hit (rtcIntersect1).
+    [[nodiscard]] PrimaryHit intersect(const BenchRay& ray) const;
+    /// Any hit (rtcOccluded1).
+    [[nodiscard]] bool occluded(const BenchRay& ray) const;
+
+private:
+    static bool monitor(void* self, ssize_t bytes, bool post);
+
+    RTCDevice device_ = nullptr;
+    RTCScene scene_ = nullptr;
+    std::vector<Vec3> vertices_;
+    std::atomic<long long> allocated_{0};
+    long long retained_ = 0;
+};
+
+}  // namespace glint::bench

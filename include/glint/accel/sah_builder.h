@@ -1,0 +1,50 @@
+#pragma once
+/// \file Parallel binned SAH construction of a binary BVH over abstract primitive bounds.
+///
+/// Both Glint hierarchies start here: the scene's top level (`Bvh`) keeps the binary tree,
+/// the triangle meshes' bottom level (`WideBvh`) collapses it into 8-wide nodes.
+
+#include "glint/math/bounds3.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace glint {
+
+struct BvhBuildConfig {
+    /// Leaves never hold more primitives than this.
+    uint32_t max_leaf_size = 8;
+    /// Surface-area-heuristic cost of one node traversal relative to one leaf block test.
+    float traversal_cost = 1.0f;
+    /// Number of SAH bins per axis (at most 64).
+    uint32_t bin_count = 32;
+    /// Leaf primitives are tested this many at a time (SIMD width of the leaf test), so the
+    /// SAH counts leaf cost in whole blocks, as Embree's builders do (log2 of the size).
+    uint32_t leaf_block_log2 = 0;
+};
+
+/// Flat node, 32 bytes: an inner node stores the index of its first child (the second
+/// child follows it); a leaf stores its first entry in the primitive order and a count.
+struct BvhNode {
+    Bounds3 bounds;
+    uint32_t index = 0;
+    uint32_t count = 0;  ///< 0 for inner nodes
+    [[nodiscard]] bool is_leaf() const { return count != 0; }
+};
+static_assert(sizeof(BvhNode) == 32);
+
+/// A binary BVH: node 0 is the root (no nodes when there is nothing to hit), leaves index
+/// `order`, which maps leaf entries to the caller's primitive indices.
+struct BinaryBvh {
+    std::vector<BvhNode> nodes;
+    std::vector<uint32_t> order;
+};
+
+/// Binned SAH build (Wald 2007, "On fast Construction of SAH-based Bounding Volume
+/// Hierarchies"), parallel over subtrees and, near the root, over primitives (oneTBB; it
+/// runs in the caller's task arena, so the arena decides the thread count). Primitives with
+/// empty bounds are left out: they can never be hit. Degenerate (flat, point) bounds are fine.
+[[nodiscard]] BinaryBvh build_binary_bvh(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config);
+
+}  // namespace glint

@@ -1,0 +1,56 @@
+#include "glint/accel/triangle_bvh.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <limits>
+
+namespace glint {
+
+void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_t> indices) {
+    const size_t count = indices.size() / 3;
+    std::vector<Bounds3> boxes(count);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1u << 14), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t t = r.begin(); t < r.end(); ++t) {
+            Bounds3 b;
+            for (int k = 0; k < 3; ++k) b.extend(positions[indices[3 * t + k]]);
+            boxes[t] = b;
+        }
+    });
+    BvhBuildConfig config;
+    config.max_leaf_size = kMaxLeafBlocks * TriangleBlock::kWidth;
+    config.leaf_block_log2 = 2;
+    wide_.build(boxes, config);
+    const std::span<const WideLeaf> leaves = wide_.leaves();
+    const std::span<const uint32_t> order = wide_.primitive_order();
+    // Each leaf gets whole blocks, consecutive in leaf order.
+    std::vector<uint32_t> first_block(leaves.size() + 1, 0);
+    for (size_t l = 0; l < leaves.size(); ++l)
+        first_block[l + 1] = first_block[l] + (leaves[l].count + TriangleBlock::kWidth - 1) / TriangleBlock::kWidth;
+    blocks_.assign(first_block.back(), TriangleBlock{});
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size(), 1u << 12), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t l = r.begin(); l < r.end(); ++l) {
+            for (uint32_t k = 0; k < first_block[l + 1] - first_block[l]; ++k) {
+                TriangleBlock& block = blocks_[first_block[l] + k];
+                for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
+                    const uint32_t entry = k * TriangleBlock::kWidth + lane;
+                    // Unused lanes get NaN vertices: every comparison fails, never a hit.
+                    block.triangle[lane] = kNoHit;
+                    if (entry >= leaves[l].count) {
+                        for (auto& vertex : block.v)
+                            for (auto& axis : vertex) axis[lane] = std::numeric_limits<float>::quiet_NaN();
+                        continue;
+                    }
+                    const uint32_t tri = order[leaves[l].first + entry];
+                    block.triangle[lane] = tri;
+                    for (int vtx = 0; vtx < 3; ++vtx) {
+                        const Vec3& p = positions[indices[3 * size_t(tri) + vtx]];
+                        for (int a = 0; a < 3; ++a) block.v[vtx][a][lane] = p[a];
+                    }
+                }
+            }
+        }
+    });
+    wide_.encode_leaves([&](uint32_t leaf) { return encode_leaf(first_block[leaf], first_block[leaf + 1] - first_block[leaf]); });
+}
+
+}  // namespace glint
