@@ -1,48 +1,192 @@
 #include "glint/io/mesh_loader.h"
 
+#include "gltf_document.h"
+#include "gltf_materials.h"
+#include "mesh_file.h"
+
 #include "glint/io/scene_file.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <cctype>
+#include <mutex>
+
 namespace glint {
+
+/// One file read for one scene: shared meshes, and the scene materials once converted.
+struct MeshCache::Entry {
+    MeshFile file;
+    bool is_gltf = false;
+    /// Scene material per file material (filled on the first placement without override).
+    std::optional<std::vector<uint32_t>> scene_materials;
+};
+
+MeshCache::MeshCache() = default;
+MeshCache::MeshCache(MeshCache&&) noexcept = default;
+MeshCache& MeshCache::operator=(MeshCache&&) noexcept = default;
+MeshCache::~MeshCache() = default;
+
+MeshCache::Entry* MeshCache::find(const std::filesystem::path& path) const {
+    const auto it = entries_.find(path.string());
+    return it == entries_.end() ? nullptr : it->second.get();
+}
+
+MeshCache::Entry& MeshCache::insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry) {
+    return *(entries_[path.string()] = std::move(entry));
+}
 
 namespace {
 
-const aiScene* read_file(Assimp::Importer& importer, const std::filesystem::path& path, unsigned flags) {
-    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
-    const aiScene* ai = importer.ReadFile(path.string(), flags);
-    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneError(path.string() + ": cannot read mesh: " + importer.GetErrorString());
-    return ai;
+bool has_gltf_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".gltf" || ext == ".glb";
+}
+
+std::filesystem::path canonical_key(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto canonical = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path.lexically_normal() : canonical;
+}
+
+/// The cache used when the caller passes none: one per Scene. A Scene's address can be
+/// reused after it dies, so a slot is trusted only while the scene still holds its witness,
+/// a mesh the slot's cache keeps alive (so no other scene can hold it).
+struct ImplicitSlot {
+    std::weak_ptr<Shape> witness;
+    MeshCache cache;
+};
+
+std::mutex implicit_mutex;
+std::map<const Scene*, ImplicitSlot> implicit_slots;
+
+ImplicitSlot& implicit_slot(const Scene& scene) {
+    ImplicitSlot& slot = implicit_slots[&scene];
+    const auto witness = slot.witness.lock();
+    const bool same_scene = witness && std::any_of(scene.objects().begin(), scene.objects().end(),
+                                                   [&](const SceneObject& o) { return o.shape == witness; });
+    if (!same_scene) slot = ImplicitSlot{};
+    return slot;
+}
+
+std::vector<uint32_t> add_file_materials(Scene& scene, MeshCache::Entry& entry, const std::filesystem::path& path,
+                                         std::vector<std::string>& warnings) {
+    std::vector<uint32_t> result;
+    if (entry.is_gltf) {
+        const gltf::Document doc = gltf::read_document(path);
+        gltf::Notes notes;
+        gltf::MaterialConverter converter(doc, scene, notes);
+        for (std::size_t m = 0; m < entry.file.meshes.size(); ++m) {
+            const uint32_t file_material = entry.file.mesh_materials[m];
+            if (result.size() <= file_material) result.resize(file_material + 1, 0);
+            const gltf::MaterialInfo& info = converter.material(int(file_material));
+            result[file_material] = info.scene_material;
+            if (entry.file.meshes[m] && info.alpha_mask) entry.file.meshes[m]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
+        }
+        for (const std::string& line : notes.ignored_lines()) warnings.push_back(path.string() + ": ignored " + line);
+        return result;
+    }
+    for (std::size_t i = 0; i < entry.file.materials.size(); ++i) {
+        Material m = entry.file.materials[i];
+        if (entry.file.material_images[i])
+            m.texture = scene.add_texture(std::make_unique<ImageTexture>(entry.file.material_images[i]));
+        result.push_back(scene.add_material(std::move(m)));
+    }
+    return result;
 }
 
 }  // namespace
 
 MeshData load_mesh_data(const std::filesystem::path& path) {
+    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
     Assimp::Importer importer;
-    const aiScene* ai = read_file(importer, path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    // Only what merging needs: no validation pass, no vertex joining (file order is kept).
+    const aiScene* ai = importer.ReadFile(path.string(), aiProcess_Triangulate);
+    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+        throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
     MeshData data;
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
         const aiMesh* mesh = ai->mMeshes[m];
-        if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
         const auto base = static_cast<uint32_t>(data.positions.size());
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
-            data.positions.emplace_back(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z);
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+            const Vec3 p(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z);
+            if (!is_finite(p))
+                throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": vertex " + std::to_string(v) +
+                                 " has a non-finite position (expected finite coordinates)");
+            data.positions.push_back(p);
+        }
         for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
             const aiFace& face = mesh->mFaces[f];
             if (face.mNumIndices != 3) continue;
-            for (int k = 0; k < 3; ++k) data.indices.push_back(base + face.mIndices[k]);
+            for (unsigned k = 0; k < 3; ++k) {
+                if (face.mIndices[k] >= mesh->mNumVertices)
+                    throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": face " + std::to_string(f) +
+                                     " uses vertex " + std::to_string(face.mIndices[k]) + " (expected an index below " +
+                                     std::to_string(mesh->mNumVertices) + ")");
+                data.indices.push_back(base + face.mIndices[k]);
+            }
         }
     }
-    if (data.indices.empty()) throw SceneError(path.string() + ": the file has no triangles");
+    if (data.indices.empty()) throw SceneError(path.string() + ": the file has no triangles (expected at least one)");
     return data;
 }
 
-MeshImportResult import_mesh_file(Scene&, const std::filesystem::path& path, const Transform&,
-                                  std::optional<uint32_t>) {
-    throw SceneError(path.string() + ": mesh import into scenes is not implemented yet");
+MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
+                                  std::optional<uint32_t> override_material, MeshCache* cache) {
+    if (override_material && *override_material >= scene.materials().size())
+        throw SceneError(path.string() + ": override material " + std::to_string(*override_material) +
+                         " does not exist (the scene has " + std::to_string(scene.materials().size()) + ")");
+    // Loaders run one scene per thread at most, but two scenes may load at once.
+    std::unique_lock<std::mutex> implicit_lock(implicit_mutex, std::defer_lock);
+    ImplicitSlot* slot = nullptr;
+    if (!cache) {
+        implicit_lock.lock();
+        slot = &implicit_slot(scene);
+    }
+    MeshCache& files = cache ? *cache : slot->cache;
+    const std::filesystem::path key = canonical_key(path);
+    MeshImportResult result;
+    MeshCache::Entry* entry = files.find(key);
+    result.reused = entry != nullptr;
+    if (!entry) {
+        auto fresh = std::make_unique<MeshCache::Entry>();
+        fresh->is_gltf = has_gltf_extension(path);
+        if (fresh->is_gltf) (void)gltf::read_document(path);  // clear errors for a truncated GLB or missing .bin
+        fresh->file = read_mesh_file(path, !fresh->is_gltf);
+        result.warnings = fresh->file.warnings;
+        entry = &files.insert(key, std::move(fresh));
+    }
+    if (!override_material && !entry->scene_materials)
+        entry->scene_materials = add_file_materials(scene, *entry, path, result.warnings);
+
+    for (const MeshPlacement& placement : entry->file.placements) {
+        Transform file_from_mesh;
+        try {
+            file_from_mesh = Transform(placement.file_from_mesh);
+        } catch (const std::invalid_argument&) {
+            result.warnings.push_back(path.string() + ": node '" + placement.node +
+                                      "' has a singular transform; its mesh is skipped");
+            continue;
+        }
+        uint32_t material = 0;
+        if (override_material) {
+            material = *override_material;
+        } else {
+            const uint32_t file_material = entry->file.mesh_materials[placement.mesh];
+            const auto& table = *entry->scene_materials;
+            material = file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
+        }
+        const auto& mesh = entry->file.meshes[placement.mesh];
+        scene.add_object(mesh, material, world_from_file * file_from_mesh, placement.node);
+        ++result.objects;
+        result.triangles += mesh->triangle_count();
+    }
+    if (slot && slot->witness.expired() && !entry->file.placements.empty())
+        slot->witness = entry->file.meshes[entry->file.placements.front().mesh];
+    return result;
 }
 
 }  // namespace glint

@@ -6,6 +6,8 @@
 #include "glint/scene/scene.h"
 
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,15 +21,44 @@ namespace glint {
 
 struct MeshImportResult {
     std::size_t objects = 0;
+    /// Triangles placed by this call (instances counted each time).
     std::size_t triangles = 0;
+    /// True if the file was already loaded (through the cache) and only placed again.
+    bool reused = false;
     std::vector<std::string> warnings;
+};
+
+/// Files already read for one scene: each file is read once and its meshes (and, once
+/// converted, its materials) are shared by every later placement of the same path.
+/// Use one cache per Scene; it holds scene material indices.
+class MeshCache {
+public:
+    MeshCache();
+    MeshCache(MeshCache&&) noexcept;
+    MeshCache& operator=(MeshCache&&) noexcept;
+    ~MeshCache();
+
+    /// Number of distinct files read.
+    [[nodiscard]] std::size_t size() const { return entries_.size(); }
+
+    struct Entry;  ///< one file's meshes and converted materials (defined in mesh_loader.cpp)
+    /// The entry for `path` (canonical form), null if not read yet.
+    [[nodiscard]] Entry* find(const std::filesystem::path& path) const;
+    Entry& insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry);
+
+private:
+    std::map<std::string, std::unique_ptr<Entry>> entries_;
 };
 
 /// Add the file's meshes to `scene` as objects placed by `world_from_file` (node transforms
 /// of the file applied below it). With `override_material` every mesh uses that scene
-/// material; otherwise the file's materials are converted and added to the scene.
-/// Throws SceneError naming the file and the problem.
+/// material; otherwise the file's materials are converted and added to the scene (glTF
+/// files through the same conversion as `glint render model.glb`, docs/assets.md).
+/// Without a `cache`, a cache private to `scene` is used, so repeated calls for one path
+/// within one scene read the file once either way. Throws SceneError naming the file and
+/// the problem; problems it can work around (bad triangles, a missing texture) become
+/// warnings in the result.
 MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
-                                  std::optional<uint32_t> override_material);
+                                  std::optional<uint32_t> override_material, MeshCache* cache = nullptr);
 
 }  // namespace glint
