@@ -31,7 +31,7 @@ void add_default_lighting(Scene& scene) {
     const Camera& c = scene.camera;
     // Travelling forward, down and to the right: the light comes from the camera's upper left.
     const Vec3 travel = normalize(c.forward() + c.right() * 0.5f - c.up() * 0.7f);
-    scene.add_light(std::make_unique<DirectionalLight>(travel, Color(1.0f)));
+    scene.add_light(std::make_unique<DirectionalLight>(travel, Color(kDefaultKeyLight)));
     scene.background = Background::constant(Color(kDefaultSky));
     scene.ambient_light = Color(kDefaultSky);
 }

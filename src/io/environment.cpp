@@ -1,7 +1,9 @@
 #include "glint/io/environment.h"
 
 #include "glint/image/image_io.h"
+#include "glint/math/constants.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -35,6 +37,20 @@ Background load_environment(const std::filesystem::path& path, const Environment
     }
     if (kind == BackgroundKind::Constant) throw std::invalid_argument("an environment map needs an image layout");
     return Background::environment(kind, std::move(image), options.rotation_degrees, options.intensity);
+}
+
+Color average_radiance(const Background& background) {
+    // A Fibonacci sphere: equal-area, so the plain mean is the mean over solid angle.
+    constexpr int kSamples = 1024;
+    const float golden_angle = kPi * (3.0f - std::sqrt(5.0f));
+    Color sum;
+    for (int i = 0; i < kSamples; ++i) {
+        const float y = 1.0f - 2.0f * (float(i) + 0.5f) / float(kSamples);
+        const float r = std::sqrt(std::max(0.0f, 1.0f - y * y));
+        const float phi = golden_angle * float(i);
+        sum += background.evaluate(Vec3(r * std::cos(phi), y, r * std::sin(phi)));
+    }
+    return sum / float(kSamples);
 }
 
 }  // namespace glint

@@ -14,8 +14,8 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
     // OpenImageIO picks the reader from the name's extension and falls back to sniffing
     // the bytes, so a wrong hint still decodes.
     OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
-    OIIO::ImageSpec config;
-    auto input = OIIO::ImageInput::open(name, &config, &reader);
+    // No config spec: OIIO 2.4 then ignores the proxy and looks for a file of that name.
+    auto input = OIIO::ImageInput::open(name, nullptr, &reader);
     if (!input) throw ImageError(name + ": cannot decode image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = input->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw ImageError(name + ": image has no pixels");

@@ -151,11 +151,14 @@ MaterialInfo MaterialConverter::convert(int index) {
             m.alpha_cutoff = info.alpha_cutoff;
         }
         if (alpha_mode == "BLEND") {
-            // No blending in a Whitted tracer: a textured alpha becomes a cut-out, a constant
-            // alpha < 1 becomes a non-refracting see-through layer.
-            notes_.ignored("alphaMode BLEND (approximated: cut-out at 0.5, constant alpha as transparency)", name);
-            if (alpha < 1.0f && m.transparency == 0.0f) {
-                m.transparency = 1.0f - std::clamp(alpha, 0.0f, 1.0f);
+            // No blending in a Whitted tracer: a textured alpha becomes a cut-out and the
+            // surface a see-through layer (transparency 1 - alpha, index 1, so rays pass
+            // straight on). It is never fully opaque (at least one 8-bit alpha step), so,
+            // like every Glint dielectric, it casts no shadow: the rasterizers glTF targets
+            // leave blended surfaces out of their shadow maps, and lamps model their shades so.
+            notes_.ignored("alphaMode BLEND (approximated: see-through layer without shadows, cut-out at 0.5)", name);
+            if (m.transparency == 0.0f) {
+                m.transparency = std::max(1.0f - std::clamp(alpha, 0.0f, 1.0f), 1.0f / 255.0f);
                 m.ior = 1.0f;
             }
         }

@@ -16,12 +16,15 @@ namespace glint {
 /// field of view for images of `aspect` = width/height), looking along -z from slightly above.
 [[nodiscard]] Camera framing_camera(const Bounds3& bounds, float aspect);
 
-/// The default lighting: a key light (directional, irradiance 1 in Glint units, from the
-/// camera's upper left) plus a uniform grey environment of radiance kDefaultSky that is both
+/// Irradiance (Glint units) of the default key light and radiance of the default grey sky:
+/// a white Lambertian surface facing the key light shows 0.75 + 0.2 = 0.95, just below white.
+inline constexpr float kDefaultKeyLight = 0.75f;
+inline constexpr float kDefaultSky = 0.2f;
+
+/// The default lighting: a directional key light of irradiance kDefaultKeyLight from the
+/// camera's upper left, plus a uniform grey environment of radiance kDefaultSky that is both
 /// the background and the ambient light. Uses scene.camera, so set the camera first.
 void add_default_lighting(Scene& scene);
-
-inline constexpr float kDefaultSky = 0.25f;
 
 /// A bare mesh file (PLY, OBJ, STL, FBX...) as a scene: its meshes and materials, a framing
 /// camera and the default lighting, 640×480. Throws SceneError.

@@ -27,4 +27,8 @@ struct EnvironmentOptions {
 /// std::invalid_argument when the layout cannot be guessed or the intensity is negative.
 [[nodiscard]] Background load_environment(const std::filesystem::path& path, const EnvironmentOptions& options = {});
 
+/// Mean radiance of the background over all directions (1024 evenly spread samples):
+/// the ambient light an environment stands for in the Whitted model.
+[[nodiscard]] Color average_radiance(const Background& background);
+
 }  // namespace glint
