@@ -100,11 +100,14 @@ TEST(EnvironmentFiles, LoadGuessLayoutAndAgree) {
     EXPECT_EQ(a.kind(), glint::BackgroundKind::Equirectangular);
     EXPECT_EQ(b.kind(), glint::BackgroundKind::SphereMap);
     // The probe was re-projected from the lat-long map with the same conventions: away from
-    // the rim (around +z and the horizon towards ±x, ±y) both must show the same sky.
-    for (const Vec3& d : {Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0.3f, -0.6f, 0.74f)}) {
+    // the ball's rim and from the busy horizon, both must show the same sky (nearest texels
+    // of two resolutions differ by a few percent).
+    for (Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0.3f, -0.6f, 0.74f), Vec3(-0.5f, 0.3f, 0.8f),
+                   Vec3(0.5f, 0.2f, 0.8f), Vec3(0.2f, 0.1f, -0.5f)}) {
+        d = normalize(d);
         const glint::Color ca = a.evaluate(d), cb = b.evaluate(d);
         ASSERT_TRUE(ca.is_finite() && cb.is_finite());
-        EXPECT_NEAR(cb.luminance() / ca.luminance(), 1.0f, 0.35f) << "direction " << d;
+        EXPECT_NEAR(cb.luminance() / ca.luminance(), 1.0f, 0.15f) << "direction " << d;
     }
     const glint::Color mean = glint::average_radiance(a);
     EXPECT_TRUE(mean.is_finite());

@@ -12,10 +12,15 @@ namespace glint {
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, ColorEncoding encoding) {
     if (bytes.empty()) throw ImageError(name + ": empty image data");
     // OpenImageIO picks the reader from the name's extension and falls back to sniffing
-    // the bytes, so a wrong hint still decodes.
+    // the bytes. In 2.4 a reader opened with a config spec takes the proxy from the spec's
+    // "oiio:ioproxy" attribute (a pointer to the pointer), not from the argument. Alpha stays
+    // unassociated: glTF (and PNG) colour is straight, and OIIO would premultiply it.
     OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
-    // No config spec: OIIO 2.4 then ignores the proxy and looks for a file of that name.
-    auto input = OIIO::ImageInput::open(name, nullptr, &reader);
+    OIIO::Filesystem::IOProxy* proxy = &reader;
+    OIIO::ImageSpec config;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto input = OIIO::ImageInput::open(name, &config, &reader);
     if (!input) throw ImageError(name + ": cannot decode image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = input->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw ImageError(name + ": image has no pixels");
