@@ -111,7 +111,11 @@ Expected expected_from_json(const json& j) {
             const std::size_t mesh = node["mesh"];
             const std::size_t tris = mesh_triangles(j, j["meshes"][mesh]);
             if (meshes.insert(mesh).second) e.triangles += tris;
-            e.instanced_triangles += tris;
+            std::size_t copies = 1;  // EXT_mesh_gpu_instancing: one copy per instance
+            if (node.contains("extensions") && node["extensions"].contains("EXT_mesh_gpu_instancing"))
+                for (const auto& [attribute, accessor] : node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"].items())
+                    copies = std::max<std::size_t>(copies, j["accessors"][accessor.get<std::size_t>()]["count"]);
+            e.instanced_triangles += tris * copies;
         }
         if (node.contains("extensions") && node["extensions"].contains("KHR_lights_punctual")) ++e.lights;
         if (node.contains("camera")) {

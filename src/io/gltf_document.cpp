@@ -99,18 +99,56 @@ Matrix4 node_matrix(const nlohmann::json& node) {
         s = {node["scale"][0].get<float>(), node["scale"][1].get<float>(), node["scale"][2].get<float>()};
     if (node.contains("rotation"))
         for (int i = 0; i < 4; ++i) q[i] = node["rotation"][std::size_t(i)].get<float>();
+    return trs_matrix(t, q, s);
+}
+
+}  // namespace
+
+Matrix4 trs_matrix(const Vec3& t, const float q[4], const Vec3& s) {
+    Matrix4 m = Matrix4::identity();
     const float x = q[0], y = q[1], z = q[2], w = q[3];
     const float r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
                            {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
                            {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
     for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) m.m[i][j] = r[i][j] * s[j];  // T·R·S
+        for (int j = 0; j < 3; ++j) m.m[i][j] = r[i][j] * s[j];
         m.m[i][3] = t[i];
     }
     return m;
 }
 
-}  // namespace
+std::vector<float> read_floats(const Document& doc, std::size_t index, int components) {
+    const auto& accessor = doc.json["accessors"].at(index);
+    const std::size_t count = accessor.at("count").get<std::size_t>();
+    const int type = accessor.at("componentType").get<int>();
+    const std::size_t size = type == 5126 || type == 5125 ? 4 : type == 5122 || type == 5123 ? 2 : 1;
+    std::vector<float> out(count * std::size_t(components), 0.0f);
+    if (!accessor.contains("bufferView")) return out;  // all zeros, per spec (sparse not supported)
+    const auto& view = doc.json["bufferViews"].at(accessor["bufferView"].get<std::size_t>());
+    const std::size_t buffer = view.at("buffer").get<std::size_t>();
+    const std::size_t element = size * std::size_t(components);
+    const std::size_t stride = view.value("byteStride", element);
+    const std::size_t begin = view.value("byteOffset", std::size_t(0)) + accessor.value("byteOffset", std::size_t(0));
+    if (count > 0 && (buffer >= doc.buffers.size() || begin + (count - 1) * stride + element > doc.buffers[buffer].size() ||
+                      begin + (count - 1) * stride + element > view.value("byteOffset", std::size_t(0)) + view.at("byteLength").get<std::size_t>()))
+        fail(doc.path, "accessor " + std::to_string(index) + " lies outside its buffer view");
+    const unsigned char* data = doc.buffers[buffer].data() + begin;
+    for (std::size_t i = 0; i < count; ++i)
+        for (int c = 0; c < components; ++c) {
+            const unsigned char* p = data + i * stride + std::size_t(c) * size;
+            float v = 0.0f;
+            switch (type) {
+                case 5126: std::memcpy(&v, p, 4); break;
+                case 5120: v = std::max(float(*reinterpret_cast<const int8_t*>(p)) / 127.0f, -1.0f); break;
+                case 5121: v = float(*p) / 255.0f; break;
+                case 5122: { int16_t x; std::memcpy(&x, p, 2); v = std::max(float(x) / 32767.0f, -1.0f); break; }
+                case 5123: { uint16_t x; std::memcpy(&x, p, 2); v = float(x) / 65535.0f; break; }
+                default: fail(doc.path, "accessor " + std::to_string(index) + " has component type " + std::to_string(type) + " (expected float or normalized integers)");
+            }
+            out[i * std::size_t(components) + std::size_t(c)] = v;
+        }
+    return out;
+}
 
 std::size_t array_size(const nlohmann::json& json, const char* key) {
     return json.contains(key) && json[key].is_array() ? json[key].size() : 0;

@@ -43,6 +43,13 @@ struct PlacedNode {
 /// the decoder the format. Throws SceneError when the image cannot be found.
 [[nodiscard]] std::vector<unsigned char> image_bytes(const Document& doc, int index, std::string& name);
 
+/// Accessor `index` as `components` floats per element (FLOAT, or normalized integer types
+/// mapped to [0, 1] / [-1, 1] as the spec says). Throws SceneError if it lies outside its buffer.
+[[nodiscard]] std::vector<float> read_floats(const Document& doc, std::size_t index, int components);
+
+/// The matrix T·R·S of a translation, a unit quaternion (x, y, z, w) and a scale.
+[[nodiscard]] Matrix4 trs_matrix(const Vec3& translation, const float rotation[4], const Vec3& scale);
+
 /// Size of the array `key` at the top level (0 when absent).
 [[nodiscard]] std::size_t array_size(const nlohmann::json& json, const char* key);
 

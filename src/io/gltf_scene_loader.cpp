@@ -8,6 +8,7 @@
 #include "glint/io/asset_defaults.h"
 #include "glint/math/constants.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <unordered_set>
@@ -113,6 +114,54 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
     }
 }
 
+/// EXT_mesh_gpu_instancing, which assimp 5.2.5 drops: the node's assimp placement is
+/// replaced by one placement per instance (node · T·R·S of the instance). assimp numbers
+/// its meshes glTF mesh by mesh, primitive by primitive, which gives the node's meshes.
+std::size_t expand_gpu_instancing(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes,
+                                  MeshFile& file) {
+    const auto& json = doc.json;
+    std::vector<std::size_t> first_primitive;  // per glTF mesh, its first assimp mesh
+    std::size_t next = 0;
+    for (const auto& mesh : json.value("meshes", nlohmann::json::array())) {
+        first_primitive.push_back(next);
+        next += mesh.value("primitives", nlohmann::json::array()).size();
+    }
+    if (next != file.meshes.size()) return 0;  // numbering not as expected: keep assimp's placements
+    std::size_t instances = 0;
+    for (const gltf::PlacedNode& placed : nodes) {
+        const auto& node = json["nodes"][std::size_t(placed.node)];
+        if (!node.contains("mesh") || !node.contains("extensions") ||
+            !node["extensions"].contains("EXT_mesh_gpu_instancing"))
+            continue;
+        const auto mesh = node["mesh"].get<std::size_t>();
+        if (mesh >= first_primitive.size()) continue;
+        const auto& attributes = node["extensions"]["EXT_mesh_gpu_instancing"].value("attributes", nlohmann::json::object());
+        std::vector<float> t, r, sc;
+        if (attributes.contains("TRANSLATION")) t = gltf::read_floats(doc, attributes["TRANSLATION"].get<std::size_t>(), 3);
+        if (attributes.contains("ROTATION")) r = gltf::read_floats(doc, attributes["ROTATION"].get<std::size_t>(), 4);
+        if (attributes.contains("SCALE")) sc = gltf::read_floats(doc, attributes["SCALE"].get<std::size_t>(), 3);
+        const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
+        if (count == 0) continue;
+        const std::size_t lo = first_primitive[mesh], hi = lo + json["meshes"][mesh]["primitives"].size();
+        // Drop assimp's single placement of this node (same meshes, same world matrix).
+        std::erase_if(file.placements, [&](const MeshPlacement& p) {
+            return p.mesh >= lo && p.mesh < hi && p.file_from_mesh == placed.world_from_node;
+        });
+        const std::string name = node.value("name", "node" + std::to_string(placed.node));
+        for (std::size_t i = 0; i < count; ++i) {
+            const Vec3 translation = t.empty() ? Vec3(0.0f) : Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+            const float identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            const float* rotation = r.empty() ? identity : &r[4 * i];
+            const Vec3 scale = sc.empty() ? Vec3(1.0f) : Vec3(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
+            const Matrix4 world = placed.world_from_node * gltf::trs_matrix(translation, rotation, scale);
+            for (std::size_t m = lo; m < hi; ++m)
+                if (file.meshes[m]) file.placements.push_back({uint32_t(m), world, name + "#" + std::to_string(i)});
+        }
+        instances += count;
+    }
+    return instances;
+}
+
 int find_camera(const GltfReport& report, const std::string& wanted) {
     if (report.cameras.empty()) return -1;
     if (wanted.empty()) return 0;
@@ -134,6 +183,11 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     const gltf::Document doc = gltf::read_document(path);
     MeshFile file = read_mesh_file(path, false);
     for (std::string& w : file.warnings) result.loaded.warnings.push_back(std::move(w));
+
+    const std::vector<gltf::PlacedNode> nodes = gltf::placed_nodes(doc);
+    const std::size_t gpu_instances = expand_gpu_instancing(doc, nodes, file);
+    if (gpu_instances > 0)
+        notes.mapped("EXT_mesh_gpu_instancing: " + std::to_string(gpu_instances) + " instance(s) placed");
 
     gltf::MaterialConverter materials(doc, scene, notes);
     materials.convert_all();
@@ -163,7 +217,6 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     report.meshes = file.distinct_meshes;
     report.textures = materials.texture_count();
 
-    const std::vector<gltf::PlacedNode> nodes = gltf::placed_nodes(doc);
     collect_cameras(doc, nodes, report, notes);
     collect_lights(doc, nodes, scene, report, notes);
 
@@ -211,10 +264,8 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     for (const auto& ext : doc.json.value("extensionsUsed", nlohmann::json::array())) {
         const std::string name = ext.get<std::string>();
         if (is_mapped_extension(name) || notes.has("material extension " + name)) continue;
-        if (name == "EXT_mesh_gpu_instancing")
-            notes.ignored("extension EXT_mesh_gpu_instancing (assimp 5.2.5 drops it: one copy of each instanced mesh)", "");
-        else
-            notes.ignored("extension " + name, "");
+        if (name == "EXT_mesh_gpu_instancing" && gpu_instances > 0) continue;
+        notes.ignored("extension " + name, "");
     }
     report.mapped = notes.mapped_lines();
     report.ignored = notes.ignored_lines();
