@@ -78,6 +78,22 @@ TEST(MeshLoader, WithoutACacheTheSceneStillReadsAFileOnce) {
     EXPECT_EQ(other.materials().size(), 1u);
 }
 
+TEST(MeshLoader, CacheDoesNotKeepADeadScenesMeshes) {
+    const fs::path dir = glint_test::temp_dir();
+    glint_test::write_file(dir / "tri.ply", ascii_ply({"0 0 0", "1 0 0", "0 1 0"}, {"3 0 1 2"}));
+    glint::MeshCache cache;
+    std::weak_ptr<glint::Shape> mesh;
+    {
+        glint::Scene scene;
+        glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), std::nullopt, &cache);
+        mesh = scene.objects()[0].shape;
+    }
+    EXPECT_TRUE(mesh.expired()) << "the scene owns the geometry, not the cache";
+    glint::Scene next;
+    EXPECT_FALSE(glint::import_mesh_file(next, dir / "tri.ply", glint::Transform(), std::nullopt, &cache).reused);
+    EXPECT_EQ(next.materials().size(), 1u);
+}
+
 TEST(MeshLoader, OverrideMaterialIsUsedAndValidated) {
     const fs::path dir = glint_test::temp_dir();
     glint_test::write_file(dir / "tri.ply", ascii_ply({"0 0 0", "1 0 0", "0 1 0"}, {"3 0 1 2"}));

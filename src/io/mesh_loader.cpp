@@ -16,12 +16,20 @@
 
 namespace glint {
 
-/// One file read for one scene: shared meshes, and the scene materials once converted.
+/// One file read for one scene. The meshes are held weakly: the scene's objects own them,
+/// so a cache never keeps a dead scene's geometry in memory, and an entry whose meshes are
+/// all gone is stale (read again).
 struct MeshCache::Entry {
+    /// The file as read; its `meshes` are moved out into `meshes` below after placing.
     MeshFile file;
+    std::vector<std::weak_ptr<TriangleMesh>> meshes;
     bool is_gltf = false;
     /// Scene material per file material (filled on the first placement without override).
     std::optional<std::vector<uint32_t>> scene_materials;
+
+    [[nodiscard]] bool alive() const {
+        return std::any_of(meshes.begin(), meshes.end(), [](const auto& m) { return !m.expired(); });
+    }
 };
 
 MeshCache::MeshCache() = default;
@@ -31,11 +39,24 @@ MeshCache::~MeshCache() = default;
 
 MeshCache::Entry* MeshCache::find(const std::filesystem::path& path) const {
     const auto it = entries_.find(path.string());
-    return it == entries_.end() ? nullptr : it->second.get();
+    return it == entries_.end() || !it->second->alive() ? nullptr : it->second.get();
 }
 
 MeshCache::Entry& MeshCache::insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry) {
     return *(entries_[path.string()] = std::move(entry));
+}
+
+bool MeshCache::holds_meshes_of(const Scene& scene) const {
+    for (const auto& [path, entry] : entries_)
+        for (const auto& weak : entry->meshes)
+            if (const auto mesh = weak.lock())
+                for (const SceneObject& o : scene.objects())
+                    if (o.shape == mesh) return true;
+    return false;
+}
+
+bool MeshCache::alive() const {
+    return std::any_of(entries_.begin(), entries_.end(), [](const auto& e) { return e.second->alive(); });
 }
 
 namespace {
@@ -52,24 +73,17 @@ std::filesystem::path canonical_key(const std::filesystem::path& path) {
     return ec ? path.lexically_normal() : canonical;
 }
 
-/// The cache used when the caller passes none: one per Scene. A Scene's address can be
-/// reused after it dies, so a slot is trusted only while the scene still holds its witness,
-/// a mesh the slot's cache keeps alive (so no other scene can hold it).
-struct ImplicitSlot {
-    std::weak_ptr<Shape> witness;
-    MeshCache cache;
-};
-
+/// The caches used when the caller passes none, one per Scene address. An address can be
+/// reused after a scene dies (or is moved from), so a cache is trusted only while that scene
+/// still holds one of its meshes; caches whose meshes all died are dropped.
 std::mutex implicit_mutex;
-std::map<const Scene*, ImplicitSlot> implicit_slots;
+std::map<const Scene*, MeshCache> implicit_caches;
 
-ImplicitSlot& implicit_slot(const Scene& scene) {
-    ImplicitSlot& slot = implicit_slots[&scene];
-    const auto witness = slot.witness.lock();
-    const bool same_scene = witness && std::any_of(scene.objects().begin(), scene.objects().end(),
-                                                   [&](const SceneObject& o) { return o.shape == witness; });
-    if (!same_scene) slot = ImplicitSlot{};
-    return slot;
+MeshCache& implicit_cache(const Scene& scene) {
+    std::erase_if(implicit_caches, [&](const auto& slot) { return slot.first != &scene && !slot.second.alive(); });
+    MeshCache& cache = implicit_caches[&scene];
+    if (!cache.holds_meshes_of(scene)) cache = MeshCache{};
+    return cache;
 }
 
 std::vector<uint32_t> add_file_materials(Scene& scene, MeshCache::Entry& entry, const std::filesystem::path& path,
@@ -79,12 +93,13 @@ std::vector<uint32_t> add_file_materials(Scene& scene, MeshCache::Entry& entry, 
         const gltf::Document doc = gltf::read_document(path);
         gltf::Notes notes;
         gltf::MaterialConverter converter(doc, scene, notes);
-        for (std::size_t m = 0; m < entry.file.meshes.size(); ++m) {
+        for (std::size_t m = 0; m < entry.meshes.size(); ++m) {
             const uint32_t file_material = entry.file.mesh_materials[m];
             if (result.size() <= file_material) result.resize(file_material + 1, 0);
             const gltf::MaterialInfo& info = converter.material(int(file_material));
             result[file_material] = info.scene_material;
-            if (entry.file.meshes[m] && info.alpha_mask) entry.file.meshes[m]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
+            if (const auto mesh = entry.meshes[m].lock(); mesh && info.alpha_mask)
+                mesh->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
         }
         for (const std::string& line : notes.ignored_lines()) warnings.push_back(path.string() + ": ignored " + line);
         return result;
@@ -141,22 +156,25 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
                          " does not exist (the scene has " + std::to_string(scene.materials().size()) + ")");
     // Loaders run one scene per thread at most, but two scenes may load at once.
     std::unique_lock<std::mutex> implicit_lock(implicit_mutex, std::defer_lock);
-    ImplicitSlot* slot = nullptr;
-    if (!cache) {
-        implicit_lock.lock();
-        slot = &implicit_slot(scene);
-    }
-    MeshCache& files = cache ? *cache : slot->cache;
+    if (!cache) implicit_lock.lock();
+    MeshCache& files = cache ? *cache : implicit_cache(scene);
     const std::filesystem::path key = canonical_key(path);
     MeshImportResult result;
     MeshCache::Entry* entry = files.find(key);
     result.reused = entry != nullptr;
-    if (!entry) {
+    // Strong references for this call: the file's meshes live in the scene once placed.
+    std::vector<std::shared_ptr<TriangleMesh>> meshes;
+    if (entry) {
+        for (const auto& weak : entry->meshes) meshes.push_back(weak.lock());
+    } else {
         auto fresh = std::make_unique<MeshCache::Entry>();
         fresh->is_gltf = has_gltf_extension(path);
         if (fresh->is_gltf) (void)gltf::read_document(path);  // clear errors for a truncated GLB or missing .bin
         fresh->file = read_mesh_file(path, !fresh->is_gltf);
         result.warnings = fresh->file.warnings;
+        meshes = std::move(fresh->file.meshes);
+        fresh->file.meshes.clear();
+        fresh->meshes.assign(meshes.begin(), meshes.end());
         entry = &files.insert(key, std::move(fresh));
     }
     if (!override_material && !entry->scene_materials)
@@ -179,13 +197,12 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
             const auto& table = *entry->scene_materials;
             material = file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
         }
-        const auto& mesh = entry->file.meshes[placement.mesh];
+        const auto& mesh = meshes[placement.mesh];
+        if (!mesh) continue;  // never placed before (singular transform), so not kept
         scene.add_object(mesh, material, world_from_file * file_from_mesh, placement.node);
         ++result.objects;
         result.triangles += mesh->triangle_count();
     }
-    if (slot && slot->witness.expired() && !entry->file.placements.empty())
-        slot->witness = entry->file.meshes[entry->file.placements.front().mesh];
     return result;
 }
 

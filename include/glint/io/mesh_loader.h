@@ -30,7 +30,8 @@ struct MeshImportResult {
 
 /// Files already read for one scene: each file is read once and its meshes (and, once
 /// converted, its materials) are shared by every later placement of the same path.
-/// Use one cache per Scene; it holds scene material indices.
+/// Use one cache per Scene; it holds scene material indices. It holds the meshes weakly
+/// (the scene owns them): an entry whose meshes all died is read again.
 class MeshCache {
 public:
     MeshCache();
@@ -38,13 +39,17 @@ public:
     MeshCache& operator=(MeshCache&&) noexcept;
     ~MeshCache();
 
-    /// Number of distinct files read.
+    /// Number of distinct files read (live or not).
     [[nodiscard]] std::size_t size() const { return entries_.size(); }
 
     struct Entry;  ///< one file's meshes and converted materials (defined in mesh_loader.cpp)
     /// The entry for `path` (canonical form), null if not read yet.
     [[nodiscard]] Entry* find(const std::filesystem::path& path) const;
     Entry& insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry);
+    /// True if `scene` holds a mesh of this cache (the cache was filled for it).
+    [[nodiscard]] bool holds_meshes_of(const Scene& scene) const;
+    /// True if any mesh of this cache is still alive.
+    [[nodiscard]] bool alive() const;
 
 private:
     std::map<std::string, std::unique_ptr<Entry>> entries_;
