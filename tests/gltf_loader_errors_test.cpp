@@ -38,13 +38,14 @@ bool has_warning(const std::vector<std::string>& warnings, const std::string& a,
 struct CliResult {
     int exit_code = -1;
     std::string err;
+    std::string out;
 };
 
 CliResult run_cli(const std::string& args, const fs::path& dir) {
-    const fs::path err = dir / "stderr.txt";
-    const std::string cmd = std::string(GLINT_CLI) + " " + args + " > /dev/null 2> " + err.string();
+    const fs::path err = dir / "stderr.txt", out = dir / "stdout.txt";
+    const std::string cmd = std::string(GLINT_CLI) + " " + args + " > " + out.string() + " 2> " + err.string();
     const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, glint_test::read_file(err)};
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, glint_test::read_file(err), glint_test::read_file(out)};
 }
 
 TEST(GltfErrors, TruncatedGlbNamesTheFile) {
@@ -127,6 +128,18 @@ TEST(GltfErrors, UnsupportedExtensionsGiveOneWarningEach) {
     EXPECT_EQ(sheen, 1);
     EXPECT_EQ(s.report.ignored.size(), 2u);
     EXPECT_EQ(s.loaded.scene.objects().size(), 1u) << "the render goes on";
+}
+
+TEST(GltfErrors, InfoListsWhatWasMappedAndIgnored) {
+    const fs::path dir = glint_test::temp_dir();
+    json j = glint_test::quad_json("quad.bin");
+    j["extensionsUsed"] = {"EXT_glint_unknown"};
+    const fs::path path = glint_test::write_gltf(dir, "quad", j);
+    const CliResult r = run_cli("info " + path.string(), dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    for (const char* expected : {"triangles:   2 unique, 2 instanced", "materials:   1", "cameras:     0 in the file",
+                                 "bounds:", "memory:", "mapped:", "automatic camera", "ignored:", "EXT_glint_unknown"})
+        EXPECT_NE(r.out.find(expected), std::string::npos) << "missing '" << expected << "' in:\n" << r.out;
 }
 
 TEST(GltfErrors, NanPositionsAreDroppedWithAWarning) {
