@@ -2,6 +2,7 @@
 
 #include "glint/io/scene_file.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -69,7 +70,8 @@ std::vector<unsigned char> read_uri(const std::filesystem::path& gltf, const std
     }
     std::string decoded;
     for (std::size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '%' && i + 2 < uri.size()) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
             decoded += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
             i += 2;
         } else {
@@ -148,6 +150,146 @@ std::vector<float> read_floats(const Document& doc, std::size_t index, int compo
             out[i * std::size_t(components) + std::size_t(c)] = v;
         }
     return out;
+}
+
+namespace {
+
+std::size_t component_size(int type) {
+    switch (type) {
+        case 5120: case 5121: return 1;
+        case 5122: case 5123: return 2;
+        case 5125: case 5126: return 4;
+        default: return 0;
+    }
+}
+
+std::size_t component_count(const std::string& type) {
+    if (type == "SCALAR") return 1;
+    if (type == "VEC2") return 2;
+    if (type == "VEC3") return 3;
+    if (type == "VEC4" || type == "MAT2") return 4;
+    if (type == "MAT3") return 9;
+    if (type == "MAT4") return 16;
+    return 0;
+}
+
+/// Check that accessor `index`, used by `user`, has data inside its buffer.
+void check_accessor(const Document& doc, std::size_t index, const std::string& user) {
+    const auto& json = doc.json;
+    if (index >= array_size(json, "accessors"))
+        fail(doc.path, user + " uses accessor " + std::to_string(index) + ", which does not exist");
+    const auto& accessor = json["accessors"][index];
+    const std::string where = user + ", accessor " + std::to_string(index);
+    const std::size_t element = component_size(accessor.at("componentType").get<int>()) *
+                                component_count(accessor.at("type").get<std::string>());
+    if (element == 0) fail(doc.path, where + ": unknown componentType or type");
+    if (!accessor.contains("bufferView")) {
+        if (accessor.contains("sparse")) return;
+        fail(doc.path, where + ": no bufferView (compressed geometry such as KHR_draco_mesh_compression is not supported)");
+    }
+    const auto view_index = accessor["bufferView"].get<std::size_t>();
+    if (view_index >= array_size(json, "bufferViews"))
+        fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " does not exist");
+    const auto& view = json["bufferViews"][view_index];
+    const auto buffer = view.at("buffer").get<std::size_t>();
+    const std::size_t view_offset = view.value("byteOffset", std::size_t(0));
+    const std::size_t view_length = view.at("byteLength").get<std::size_t>();
+    if (buffer >= doc.buffers.size() || view_offset + view_length > doc.buffers[buffer].size())
+        fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " lies outside its buffer");
+    const std::size_t count = accessor.at("count").get<std::size_t>();
+    const std::size_t stride = view.value("byteStride", element);
+    if (count > 0 && accessor.value("byteOffset", std::size_t(0)) + (count - 1) * stride + element > view_length)
+        fail(doc.path, where + ": " + std::to_string(count) + " elements do not fit in bufferView " +
+                           std::to_string(view_index) + " (" + std::to_string(view_length) + " bytes)");
+}
+
+}  // namespace
+
+std::string geometry_glb(const Document& doc) {
+    using nlohmann::json;
+    const json& in = doc.json;
+    json out;
+    out["asset"] = {{"version", "2.0"}};
+    if (in.contains("scene")) out["scene"] = in["scene"];
+    if (in.contains("scenes")) {
+        out["scenes"] = json::array();
+        for (const auto& scene : in["scenes"]) out["scenes"].push_back({{"nodes", scene.value("nodes", json::array())}});
+    }
+    const std::size_t mesh_count = array_size(in, "meshes");
+    out["nodes"] = json::array();
+    for (const auto& node : in.value("nodes", json::array())) {
+        json n = json::object();
+        for (const char* key : {"name", "children", "matrix", "translation", "rotation", "scale"})
+            if (node.contains(key)) n[key] = node[key];
+        if (node.contains("mesh") && node["mesh"].get<std::size_t>() < mesh_count) n["mesh"] = node["mesh"];
+        out["nodes"].push_back(std::move(n));
+    }
+    out["meshes"] = json::array();
+    for (std::size_t m = 0; m < mesh_count; ++m) {
+        const auto& mesh = in["meshes"][m];
+        json primitives = json::array();
+        std::size_t p = 0;
+        for (const auto& primitive : mesh.at("primitives")) {
+            const std::string user = "mesh " + std::to_string(m) + " primitive " + std::to_string(p++);
+            json kept = {{"attributes", primitive.at("attributes")}};
+            if (!primitive["attributes"].contains("POSITION")) fail(doc.path, user + " has no POSITION attribute");
+            for (const auto& [name, accessor] : primitive["attributes"].items())
+                check_accessor(doc, accessor.get<std::size_t>(), user + " attribute " + name);
+            if (primitive.contains("indices")) {
+                check_accessor(doc, primitive["indices"].get<std::size_t>(), user + " indices");
+                kept["indices"] = primitive["indices"];
+            }
+            if (primitive.contains("mode")) kept["mode"] = primitive["mode"];
+            primitives.push_back(std::move(kept));
+        }
+        json kept_mesh = {{"primitives", std::move(primitives)}};
+        if (mesh.contains("name")) kept_mesh["name"] = mesh["name"];
+        out["meshes"].push_back(std::move(kept_mesh));
+    }
+    if (in.contains("accessors")) out["accessors"] = in["accessors"];
+
+    // One merged buffer: every buffer 4-byte aligned, bufferViews shifted to match.
+    std::vector<std::size_t> base;
+    std::string bin;
+    for (const auto& buffer : doc.buffers) {
+        base.push_back(bin.size());
+        bin.append(reinterpret_cast<const char*>(buffer.data()), buffer.size());
+        while (bin.size() % 4) bin += '\0';
+    }
+    out["bufferViews"] = json::array();
+    for (const auto& view : in.value("bufferViews", json::array())) {
+        json v = json::object();
+        const auto buffer = view.at("buffer").get<std::size_t>();
+        if (buffer >= base.size()) fail(doc.path, "a bufferView uses buffer " + std::to_string(buffer) + ", which does not exist");
+        v["buffer"] = 0;
+        v["byteOffset"] = base[buffer] + view.value("byteOffset", std::size_t(0));
+        v["byteLength"] = view.at("byteLength");
+        if (view.contains("byteStride")) v["byteStride"] = view["byteStride"];
+        out["bufferViews"].push_back(std::move(v));
+    }
+    out["buffers"] = json::array({{{"byteLength", bin.size()}}});
+
+    std::string text = out.dump();
+    while (text.size() % 4) text += ' ';
+    auto u32 = [](std::size_t v) {
+        const auto x = static_cast<uint32_t>(v);
+        return std::string(reinterpret_cast<const char*>(&x), 4);
+    };
+    std::string glb = "glTF" + u32(2) + u32(12 + 8 + text.size() + 8 + bin.size());
+    glb += u32(text.size()) + u32(kChunkJson) + text;
+    glb += u32(bin.size()) + u32(kChunkBinary) + bin;
+    return glb;
+}
+
+std::vector<uint32_t> primitive_materials(const Document& doc) {
+    std::vector<uint32_t> result;
+    const auto none = static_cast<uint32_t>(array_size(doc.json, "materials"));
+    for (const auto& mesh : doc.json.value("meshes", nlohmann::json::array()))
+        for (const auto& primitive : mesh.value("primitives", nlohmann::json::array())) {
+            const auto m = primitive.value("material", std::size_t(none));
+            result.push_back(m < none ? static_cast<uint32_t>(m) : none);
+        }
+    return result;
 }
 
 std::size_t array_size(const nlohmann::json& json, const char* key) {

@@ -162,6 +162,28 @@ std::size_t expand_gpu_instancing(const gltf::Document& doc, const std::vector<g
     return instances;
 }
 
+/// Skins, morph targets and animations: the geometry reader never sees them (it is given
+/// the geometry only), so they are reported from the JSON.
+void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, gltf::Notes& notes) {
+    const auto& json = doc.json;
+    for (const gltf::PlacedNode& placed : nodes) {
+        const auto& node = json["nodes"][std::size_t(placed.node)];
+        if (node.contains("skin"))
+            notes.ignored("skin (mesh drawn in its bind pose)", node.value("name", "node" + std::to_string(placed.node)));
+    }
+    std::size_t m = 0;
+    for (const auto& mesh : json.value("meshes", nlohmann::json::array())) {
+        for (const auto& primitive : mesh.value("primitives", nlohmann::json::array()))
+            if (primitive.contains("targets")) {
+                notes.ignored("morph targets (base shape drawn)", mesh.value("name", "mesh" + std::to_string(m)));
+                break;
+            }
+        ++m;
+    }
+    if (const std::size_t animations = gltf::array_size(json, "animations"); animations > 0)
+        notes.ignored(std::to_string(animations) + " animation(s) (nodes drawn at their rest transforms)", "");
+}
+
 int find_camera(const GltfReport& report, const std::string& wanted) {
     if (report.cameras.empty()) return -1;
     if (wanted.empty()) return 0;
@@ -181,10 +203,11 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     gltf::Notes notes;
 
     const gltf::Document doc = gltf::read_document(path);
-    MeshFile file = read_mesh_file(path, false);
+    MeshFile file = read_gltf_geometry(doc);
     for (std::string& w : file.warnings) result.loaded.warnings.push_back(std::move(w));
 
     const std::vector<gltf::PlacedNode> nodes = gltf::placed_nodes(doc);
+    note_animation(doc, nodes, notes);
     const std::size_t gpu_instances = expand_gpu_instancing(doc, nodes, file);
     if (gpu_instances > 0)
         notes.mapped("EXT_mesh_gpu_instancing: " + std::to_string(gpu_instances) + " instance(s) placed");

@@ -1,5 +1,6 @@
 #include "mesh_file.h"
 
+#include "gltf_document.h"
 #include "gltf_image.h"
 
 #include "glint/image/image_io.h"
@@ -145,25 +146,37 @@ Material convert_assimp_material(const aiMaterial* mat, unsigned index) {
 
 }  // namespace
 
-MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_materials) {
-    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
-    Assimp::Importer importer;
-    const aiScene* ai = importer.ReadFile(path.string(), kImportFlags);
-    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
+std::vector<std::string> animation_warnings(const std::filesystem::path& path, const MeshFile& file) {
+    std::vector<std::string> lines;
+    auto names = [](const std::vector<std::string>& list) {
+        std::string joined;
+        for (std::size_t i = 0; i < list.size() && i < 4; ++i) joined += (i ? ", '" : "'") + list[i] + "'";
+        if (list.size() > 4) joined += " and " + std::to_string(list.size() - 4) + " more";
+        return joined;
+    };
+    if (!file.skinned_meshes.empty())
+        lines.push_back(path.string() + ": ignored skins: meshes drawn in their bind pose (" + names(file.skinned_meshes) + ")");
+    if (!file.morphed_meshes.empty())
+        lines.push_back(path.string() + ": ignored morph targets: meshes drawn with their base shape (" +
+                        names(file.morphed_meshes) + ")");
+    if (file.animations > 0)
+        lines.push_back(path.string() + ": ignored " + std::to_string(file.animations) +
+                        " animation(s): nodes drawn at their rest transforms");
+    return lines;
+}
 
+namespace {
+
+/// Glint meshes, placements and (optionally) materials of an assimp scene read from `path`.
+MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, bool convert_materials) {
     MeshFile file;
     std::size_t dropped = 0, non_triangles = 0, empty = 0;
     for (unsigned i = 0; i < ai->mNumMeshes; ++i) {
         const aiMesh* mesh = ai->mMeshes[i];
         file.mesh_materials.push_back(mesh->mMaterialIndex);
         MeshData data = convert_mesh(mesh, dropped, non_triangles);
-        if (mesh->HasBones())
-            file.warnings.push_back(path.string() + ": mesh '" + mesh_name(mesh, i) +
-                                    "' is skinned: skin ignored, drawn in its bind pose");
-        if (mesh->mNumAnimMeshes > 0)
-            file.warnings.push_back(path.string() + ": mesh '" + mesh_name(mesh, i) +
-                                    "' has morph targets: ignored, drawn with its base shape");
+        if (mesh->HasBones()) file.skinned_meshes.push_back(mesh_name(mesh, i));
+        if (mesh->mNumAnimMeshes > 0) file.morphed_meshes.push_back(mesh_name(mesh, i));
         if (data.indices.empty()) {
             ++empty;
             file.meshes.push_back(nullptr);
@@ -179,9 +192,7 @@ MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_material
                                 " point/line primitive(s) (Glint renders triangles only)");
     if (empty > 0 && empty < ai->mNumMeshes)
         file.warnings.push_back(path.string() + ": " + std::to_string(empty) + " mesh(es) without triangles skipped");
-    if (ai->mNumAnimations > 0)
-        file.warnings.push_back(path.string() + ": " + std::to_string(ai->mNumAnimations) +
-                                " animation(s) ignored: nodes drawn at their rest transforms");
+    file.animations = ai->mNumAnimations;
 
     std::set<std::vector<unsigned>> groups;
     std::function<void(const aiNode*, const Matrix4&)> visit = [&](const aiNode* node, const Matrix4& parent) {
@@ -203,6 +214,33 @@ MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_material
             file.material_images.push_back(material_image(ai, ai->mMaterials[i], path, file.warnings));
         }
     }
+    return file;
+}
+
+}  // namespace
+
+MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_materials) {
+    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
+    Assimp::Importer importer;
+    const aiScene* ai = importer.ReadFile(path.string(), kImportFlags);
+    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+        throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
+    return convert_scene(ai, path, convert_materials);
+}
+
+MeshFile read_gltf_geometry(const gltf::Document& doc) {
+    const std::string glb = gltf::geometry_glb(doc);
+    Assimp::Importer importer;
+    const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
+    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+        throw SceneError(doc.path.string() + ": cannot read the geometry: " + importer.GetErrorString());
+    MeshFile file = convert_scene(ai, doc.path, false);
+    // assimp numbers meshes primitive by primitive; the materials come from the JSON.
+    std::vector<uint32_t> materials = gltf::primitive_materials(doc);
+    if (materials.size() != file.mesh_materials.size())
+        throw SceneError(doc.path.string() + ": assimp returned " + std::to_string(file.mesh_materials.size()) +
+                         " meshes for " + std::to_string(materials.size()) + " primitives (expected one each)");
+    file.mesh_materials = std::move(materials);
     return file;
 }
 

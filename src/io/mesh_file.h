@@ -34,12 +34,30 @@ struct MeshFile {
     /// the decoded diffuse texture of each (null for none).
     std::vector<Material> materials;
     std::vector<std::shared_ptr<const Image>> material_images;
+    /// Problems worked around (dropped triangles, missing textures), one line each.
     std::vector<std::string> warnings;
+    /// What the file animates, which Glint draws at rest: names of skinned meshes and of
+    /// meshes with morph targets, and the number of animations. Callers word the warnings.
+    std::vector<std::string> skinned_meshes;
+    std::vector<std::string> morphed_meshes;
+    std::size_t animations = 0;
 };
+
+/// The warning lines for `file`'s skins, morph targets and animations ("path: ...").
+[[nodiscard]] std::vector<std::string> animation_warnings(const std::filesystem::path& path, const MeshFile& file);
 
 /// Read `path` with assimp. `convert_materials`: also convert assimp's materials (glTF
 /// files convert theirs from the JSON instead). Throws SceneError naming the file and the
 /// problem when nothing usable is in it.
 [[nodiscard]] MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_materials);
+
+namespace gltf {
+struct Document;
+}
+
+/// The geometry of a glTF document through assimp (gltf::geometry_glb explains why assimp
+/// sees only the geometry); `mesh_materials` are the JSON material indices. No materials
+/// are converted. Throws SceneError.
+[[nodiscard]] MeshFile read_gltf_geometry(const gltf::Document& doc);
 
 }  // namespace glint

@@ -169,9 +169,9 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     } else {
         auto fresh = std::make_unique<MeshCache::Entry>();
         fresh->is_gltf = has_gltf_extension(path);
-        if (fresh->is_gltf) (void)gltf::read_document(path);  // clear errors for a truncated GLB or missing .bin
-        fresh->file = read_mesh_file(path, !fresh->is_gltf);
+        fresh->file = fresh->is_gltf ? read_gltf_geometry(gltf::read_document(path)) : read_mesh_file(path, true);
         result.warnings = fresh->file.warnings;
+        for (std::string& line : animation_warnings(path, fresh->file)) result.warnings.push_back(std::move(line));
         meshes = std::move(fresh->file.meshes);
         fresh->file.meshes.clear();
         fresh->meshes.assign(meshes.begin(), meshes.end());
