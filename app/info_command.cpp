@@ -72,9 +72,11 @@ int run_info(const std::string& path, const SceneOptions& opt) {
         for (const std::string& line : r.mapped) fmt::print("  {}\n", line);
         fmt::print("ignored:{}\n", r.ignored.empty() ? " nothing" : "");
         for (const std::string& line : r.ignored) fmt::print("  {}\n", line);
-    } else {
-        for (const std::string& w : source.loaded.warnings) fmt::print("warning:     {}\n", w);
     }
+    // Problems worked around (dropped triangles, unreadable textures); for glTF the
+    // "ignored" lines above are also warnings and are not repeated.
+    for (const std::string& w : source.loaded.warnings)
+        if (!source.gltf || w.find(": ignored ") == std::string::npos) fmt::print("warning:     {}\n", w);
     fmt::print("load {:.2f} s, build {:.2f} s\n", load_seconds, build_seconds);
     return 0;
 }

@@ -196,6 +196,55 @@ TEST(GltfErrors, BadJsonAndWrongVersionAreErrors) {
     EXPECT_NE(load_error(glint_test::write_gltf(dir, "typed", j)).find("typed.gltf"), std::string::npos);
 }
 
+TEST(GltfErrors, HostileHierarchyDoesNotCrash) {
+    const fs::path dir = glint_test::temp_dir();
+    json j = glint_test::quad_json("quad.bin");
+    // node 1 and 2 form a cycle, node 0 lists itself and a child that does not exist.
+    j["nodes"][0]["children"] = {0, 1, 99};
+    j["nodes"].push_back({{"mesh", 0}, {"children", {2}}, {"translation", {1, 0, 0}}});
+    j["nodes"].push_back({{"mesh", 0}, {"children", {1}}, {"translation", {0, 1, 0}}});
+    j["scenes"][0]["nodes"] = {0, 7};
+    const glint::GltfScene s = glint::load_gltf_scene(glint_test::write_gltf(dir, "cycle", j));
+    EXPECT_EQ(s.report.objects, 3u);
+}
+
+TEST(GltfErrors, AccessorsOutsideTheirBufferAreErrors) {
+    const fs::path dir = glint_test::temp_dir();
+    json j = glint_test::quad_json("quad.bin");
+    j["accessors"][0]["count"] = 1000;  // 12 kB of positions in a 48-byte view
+    std::string error = load_error(glint_test::write_gltf(dir, "long", j));
+    EXPECT_NE(error.find("long.gltf"), std::string::npos) << error;
+    EXPECT_NE(error.find("accessor 0"), std::string::npos) << error;
+    j = glint_test::quad_json("quad.bin");
+    j["bufferViews"][1]["byteLength"] = 4000;
+    error = load_error(glint_test::write_gltf(dir, "view", j));
+    EXPECT_NE(error.find("outside its buffer"), std::string::npos) << error;
+    j = glint_test::quad_json("quad.bin");
+    j["meshes"][0]["primitives"][0]["indices"] = 9;
+    error = load_error(glint_test::write_gltf(dir, "dangling", j));
+    EXPECT_NE(error.find("does not exist"), std::string::npos) << error;
+    j = glint_test::quad_json("quad.bin");
+    j["nodes"][0]["mesh"] = 3;
+    error = load_error(glint_test::write_gltf(dir, "nomesh", j));
+    EXPECT_NE(error.find("mesh 3"), std::string::npos) << error;
+}
+
+TEST(GltfErrors, OutOfRangeIndexValuesAreDroppedOrRefused) {
+    const fs::path dir = glint_test::temp_dir();
+    const fs::path path = glint_test::write_gltf(dir, "quad", glint_test::quad_json("quad.bin"));
+    std::string bin = glint_test::quad_buffer();
+    const uint32_t bad = 77;
+    std::memcpy(bin.data() + 48 + 5 * 4, &bad, 4);  // second triangle uses vertex 77 of 4
+    glint_test::write_file(dir / "quad.bin", bin);
+    try {
+        const glint::GltfScene s = glint::load_gltf_scene(path);
+        EXPECT_EQ(s.report.triangles, 1u);
+        EXPECT_TRUE(has_warning(s.loaded.warnings, "quad.gltf", "out-of-range"));
+    } catch (const glint::SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("quad.gltf"), std::string::npos) << e.what();
+    }
+}
+
 TEST(GltfErrors, NoGeometryIsAnError) {
     const fs::path dir = glint_test::temp_dir();
     json j = glint_test::quad_json("quad.bin");

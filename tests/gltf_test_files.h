@@ -62,10 +62,12 @@ inline std::string quad_buffer() {
     return bytes;
 }
 
-/// Write `json` as dir/name.gltf next to the quad's buffer dir/name.bin.
+/// Write `json` as dir/name.gltf next to the quad's buffer dir/name.bin (the buffer's uri
+/// is pointed at it).
 inline std::filesystem::path write_gltf(const std::filesystem::path& dir, const std::string& name,
-                                        const nlohmann::json& json) {
+                                        nlohmann::json json) {
     write_file(dir / (name + ".bin"), quad_buffer());
+    if (json.contains("buffers") && json["buffers"][0].contains("uri")) json["buffers"][0]["uri"] = name + ".bin";
     const auto path = dir / (name + ".gltf");
     write_file(path, json.dump(2));
     return path;

@@ -203,9 +203,27 @@ void check_accessor(const Document& doc, std::size_t index, const std::string& u
                            std::to_string(view_index) + " (" + std::to_string(view_length) + " bytes)");
 }
 
+/// Number of index values of accessor `index` (already checked) that are >= `vertices`.
+std::size_t count_bad_indices(const Document& doc, std::size_t index, std::size_t vertices) {
+    const auto& accessor = doc.json["accessors"][index];
+    if (!accessor.contains("bufferView")) return 0;
+    const auto& view = doc.json["bufferViews"][accessor["bufferView"].get<std::size_t>()];
+    const std::size_t size = component_size(accessor["componentType"].get<int>());
+    const std::size_t stride = view.value("byteStride", size);
+    const unsigned char* data = doc.buffers[view["buffer"].get<std::size_t>()].data() +
+                                view.value("byteOffset", std::size_t(0)) + accessor.value("byteOffset", std::size_t(0));
+    std::size_t bad = 0;
+    for (std::size_t i = 0, n = accessor["count"].get<std::size_t>(); i < n; ++i) {
+        uint32_t v = 0;
+        std::memcpy(&v, data + i * stride, size);  // little-endian: the low bytes come first
+        bad += v >= vertices;
+    }
+    return bad;
+}
+
 }  // namespace
 
-std::string geometry_glb(const Document& doc) {
+std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings) {
     using nlohmann::json;
     const json& in = doc.json;
     json out;
@@ -216,14 +234,44 @@ std::string geometry_glb(const Document& doc) {
         for (const auto& scene : in["scenes"]) out["scenes"].push_back({{"nodes", scene.value("nodes", json::array())}});
     }
     const std::size_t mesh_count = array_size(in, "meshes");
+    const std::size_t node_count = array_size(in, "nodes");
+    // The hierarchy must be a forest: a child index that does not exist, a second parent or a
+    // cycle is dropped (assimp would read past the array or recurse forever).
+    std::vector<int> parent(node_count, -1);
+    auto is_ancestor = [&](std::size_t candidate, std::size_t node) {
+        for (int p = int(node); p >= 0; p = parent[std::size_t(p)])
+            if (std::size_t(p) == candidate) return true;
+        return false;
+    };
     out["nodes"] = json::array();
-    for (const auto& node : in.value("nodes", json::array())) {
+    for (std::size_t i = 0; i < node_count; ++i) {
+        const auto& node = in["nodes"][i];
         json n = json::object();
-        for (const char* key : {"name", "children", "matrix", "translation", "rotation", "scale"})
+        for (const char* key : {"name", "matrix", "translation", "rotation", "scale"})
             if (node.contains(key)) n[key] = node[key];
-        if (node.contains("mesh") && node["mesh"].get<std::size_t>() < mesh_count) n["mesh"] = node["mesh"];
+        if (node.contains("mesh")) {
+            if (node["mesh"].get<std::size_t>() >= mesh_count)
+                fail(doc.path, "node " + std::to_string(i) + " uses mesh " + std::to_string(node["mesh"].get<std::size_t>()) +
+                                   ", which does not exist");
+            n["mesh"] = node["mesh"];
+        }
+        json children = json::array();
+        for (const auto& c : node.value("children", json::array())) {
+            const auto child = c.get<std::size_t>();
+            if (child >= node_count || parent[child] >= 0 || is_ancestor(child, i)) continue;
+            parent[child] = int(i);
+            children.push_back(child);
+        }
+        if (!children.empty()) n["children"] = std::move(children);
         out["nodes"].push_back(std::move(n));
     }
+    if (out.contains("scenes"))
+        for (auto& scene : out["scenes"]) {
+            json roots = json::array();
+            for (const auto& r : scene["nodes"])
+                if (r.get<std::size_t>() < node_count && parent[r.get<std::size_t>()] < 0) roots.push_back(r);
+            scene["nodes"] = std::move(roots);
+        }
     out["meshes"] = json::array();
     for (std::size_t m = 0; m < mesh_count; ++m) {
         const auto& mesh = in["meshes"][m];
@@ -236,8 +284,14 @@ std::string geometry_glb(const Document& doc) {
             for (const auto& [name, accessor] : primitive["attributes"].items())
                 check_accessor(doc, accessor.get<std::size_t>(), user + " attribute " + name);
             if (primitive.contains("indices")) {
-                check_accessor(doc, primitive["indices"].get<std::size_t>(), user + " indices");
-                kept["indices"] = primitive["indices"];
+                const auto indices = primitive["indices"].get<std::size_t>();
+                check_accessor(doc, indices, user + " indices");
+                const auto vertices = in["accessors"][primitive["attributes"]["POSITION"].get<std::size_t>()]["count"];
+                if (const std::size_t bad = count_bad_indices(doc, indices, vertices.get<std::size_t>()); bad > 0)
+                    warnings.push_back(doc.path.string() + ": " + user + ": " + std::to_string(bad) +
+                                       " out-of-range vertex index(es) (expected below " +
+                                       std::to_string(vertices.get<std::size_t>()) + "); their triangles are dropped");
+                kept["indices"] = indices;
             }
             if (primitive.contains("mode")) kept["mode"] = primitive["mode"];
             primitives.push_back(std::move(kept));

@@ -55,8 +55,9 @@ struct PlacedNode {
 /// merged buffer; no materials, images, cameras, lights, skins, animations, morph targets or
 /// extensions. Why: Glint reads those itself from the JSON, and assimp 5.2.5 crashes on some
 /// valid files in exactly those parts (a skin without inverseBindMatrices). Every accessor a
-/// primitive uses is checked to lie inside its buffer first. Throws SceneError.
-[[nodiscard]] std::string geometry_glb(const Document& doc);
+/// primitive uses is checked to lie inside its buffer first, and out-of-range index values
+/// are reported in `warnings`. Throws SceneError.
+[[nodiscard]] std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings);
 
 /// Per mesh primitive in assimp's numbering (mesh by mesh, primitive by primitive), its
 /// material index (the count of materials for "none").

@@ -229,12 +229,14 @@ MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_material
 }
 
 MeshFile read_gltf_geometry(const gltf::Document& doc) {
-    const std::string glb = gltf::geometry_glb(doc);
+    std::vector<std::string> warnings;
+    const std::string glb = gltf::geometry_glb(doc, warnings);
     Assimp::Importer importer;
     const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
         throw SceneError(doc.path.string() + ": cannot read the geometry: " + importer.GetErrorString());
     MeshFile file = convert_scene(ai, doc.path, false);
+    file.warnings.insert(file.warnings.begin(), warnings.begin(), warnings.end());
     // assimp numbers meshes primitive by primitive; the materials come from the JSON.
     std::vector<uint32_t> materials = gltf::primitive_materials(doc);
     if (materials.size() != file.mesh_materials.size())
