@@ -50,19 +50,6 @@ struct PlacedNode {
 /// The matrix T·R·S of a translation, a unit quaternion (x, y, z, w) and a scale.
 [[nodiscard]] Matrix4 trs_matrix(const Vec3& translation, const float rotation[4], const Vec3& scale);
 
-/// The geometry of `doc` as a self-contained GLB for assimp: scenes, nodes (names,
-/// transforms, children, meshes), meshes (attributes, indices, mode), accessors and one
-/// merged buffer; no materials, images, cameras, lights, skins, animations, morph targets or
-/// extensions. Why: Glint reads those itself from the JSON, and assimp 5.2.5 crashes on some
-/// valid files in exactly those parts (a skin without inverseBindMatrices). Every accessor a
-/// primitive uses is checked to lie inside its buffer first, and out-of-range index values
-/// are reported in `warnings`. Throws SceneError.
-[[nodiscard]] std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings);
-
-/// Per mesh primitive in assimp's numbering (mesh by mesh, primitive by primitive), its
-/// material index (the count of materials for "none").
-[[nodiscard]] std::vector<uint32_t> primitive_materials(const Document& doc);
-
 /// Size of the array `key` at the top level (0 when absent).
 [[nodiscard]] std::size_t array_size(const nlohmann::json& json, const char* key);
 

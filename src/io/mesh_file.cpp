@@ -1,6 +1,6 @@
 #include "mesh_file.h"
 
-#include "gltf_document.h"
+#include "gltf_geometry.h"
 #include "gltf_image.h"
 
 #include "glint/image/image_io.h"
