@@ -6,6 +6,7 @@
 
 #include "glint/scene/scene.h"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <optional>
@@ -32,7 +33,9 @@ public:
     /// glTF's default material (white, metallic 1, roughness 1 per spec; see docs/assets.md).
     const MaterialInfo& material(int index);
     /// Distinct textures added to the scene.
-    [[nodiscard]] std::size_t texture_count() const { return textures_.size(); }
+    [[nodiscard]] std::size_t texture_count() const {
+        return std::size_t(std::count_if(textures_.begin(), textures_.end(), [](const auto& t) { return t.second; }));
+    }
 
 private:
     MaterialInfo convert(int index);

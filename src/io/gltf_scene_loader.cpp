@@ -196,6 +196,32 @@ int find_camera(const GltfReport& report, const std::string& wanted) {
     return -2;
 }
 
+/// Render through the file's camera `options.camera` (the first by default), or frame the
+/// scene automatically when the file has none; the image gets the camera's aspect ratio.
+void choose_camera(const std::filesystem::path& path, const GltfOptions& options, GltfReport& report, Scene& scene,
+                   RenderSettings& settings, gltf::Notes& notes) {
+    settings.width = 640;
+    settings.height = 480;
+    report.selected_camera = find_camera(report, options.camera);
+    if (report.selected_camera == -2) {
+        std::string names;
+        for (const GltfCamera& c : report.cameras)
+            names += (names.empty() ? "" : ", ") + std::to_string(c.index) + " '" + c.name + "'";
+        throw SceneError(path.string() + ": no camera '" + options.camera + "' (the file has " +
+                         (names.empty() ? std::string("none") : names) + ")");
+    }
+    if (report.selected_camera >= 0) {
+        const GltfCamera& chosen = report.cameras[std::size_t(report.selected_camera)];
+        scene.camera = chosen.camera;
+        if (chosen.aspect > 0.0f)
+            settings.height = std::max(1u, uint32_t(std::lround(float(settings.width) / chosen.aspect)));
+        notes.mapped("camera: '" + chosen.name + "' (" + std::to_string(report.cameras.size()) + " in the file)");
+    } else {
+        scene.camera = framing_camera(object_bounds(scene), float(settings.width) / float(settings.height));
+        notes.mapped("camera: none in the file; automatic camera framing the scene's bounds");
+    }
+}
+
 GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     GltfScene result;
     Scene& scene = result.loaded.scene;
@@ -243,27 +269,7 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     collect_cameras(doc, nodes, report, notes);
     collect_lights(doc, nodes, scene, report, notes);
 
-    RenderSettings& settings = result.loaded.settings;
-    settings.width = 640;
-    settings.height = 480;
-    report.selected_camera = find_camera(report, options.camera);
-    if (report.selected_camera == -2) {
-        std::string names;
-        for (const GltfCamera& c : report.cameras)
-            names += (names.empty() ? "" : ", ") + std::to_string(c.index) + " '" + c.name + "'";
-        throw SceneError(path.string() + ": no camera '" + options.camera + "' (the file has " +
-                         (names.empty() ? std::string("none") : names) + ")");
-    }
-    if (report.selected_camera >= 0) {
-        const GltfCamera& chosen = report.cameras[std::size_t(report.selected_camera)];
-        scene.camera = chosen.camera;
-        if (chosen.aspect > 0.0f)
-            settings.height = std::max(1u, uint32_t(std::lround(float(settings.width) / chosen.aspect)));
-        notes.mapped("camera: '" + chosen.name + "' (" + std::to_string(report.cameras.size()) + " in the file)");
-    } else {
-        scene.camera = framing_camera(object_bounds(scene), float(settings.width) / float(settings.height));
-        notes.mapped("camera: none in the file; automatic camera framing the scene's bounds");
-    }
+    choose_camera(path, options, report, scene, result.loaded.settings, notes);
     if (report.lights == 0) {
         add_default_lighting(scene);
         report.default_lighting = true;
