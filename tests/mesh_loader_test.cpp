@@ -129,6 +129,21 @@ TEST(MeshLoader, ObjWithMtlGetsItsMaterialAndTexture) {
     EXPECT_NE(result.warnings.front().find("missing.png"), std::string::npos) << result.warnings.front();
 }
 
+TEST(MeshLoader, GltfImportKeepsInstancingAndMaterials) {
+    const fs::path gltf = fs::path(GLINT_SHARED_DATA_DIR) / "gltf";
+    const fs::path instancing = gltf / "SimpleInstancing/glTF-Binary/SimpleInstancing.glb";
+    const fs::path spheres = gltf / "MetalRoughSpheresNoTextures/glTF-Binary/MetalRoughSpheresNoTextures.glb";
+    if (!fs::exists(instancing) || !fs::exists(spheres)) GTEST_SKIP() << "no shared glTF samples";
+    glint::Scene scene;
+    const auto boxes = glint::import_mesh_file(scene, instancing, glint::Transform(), std::nullopt);
+    EXPECT_EQ(boxes.objects, 125u) << "EXT_mesh_gpu_instancing: one object per instance";
+    const auto balls = glint::import_mesh_file(scene, spheres, glint::Transform::scale(glint::Vec3(10.0f)), std::nullopt);
+    EXPECT_GT(balls.objects, 98u);
+    bool metal = false;
+    for (const auto& m : scene.materials()) metal = metal || (m.fresnel_mirror && m.diffuse.is_black());
+    EXPECT_TRUE(metal) << "the glTF materials are converted, smooth metals included";
+}
+
 TEST(MeshLoaderErrors, NanVerticesAreDroppedWithAWarning) {
     const fs::path dir = glint_test::temp_dir();
     glint_test::write_file(dir / "nan.ply", ascii_ply({"0 0 0", "1 0 0", "0 1 0", "nan 0 0"}, {"3 0 1 2", "3 0 1 3"}));

@@ -2,6 +2,8 @@
 
 #include "glint/io/scene_file.h"
 
+#include <algorithm>
+
 #include <cstring>
 
 namespace glint::gltf {
@@ -205,6 +207,54 @@ std::vector<uint32_t> primitive_materials(const Document& doc) {
             result.push_back(m < none ? static_cast<uint32_t>(m) : none);
         }
     return result;
+}
+
+/// EXT_mesh_gpu_instancing, which assimp 5.2.5 drops: the node's assimp placement is
+/// replaced by one placement per instance (node · T·R·S of the instance). assimp numbers
+/// its meshes glTF mesh by mesh, primitive by primitive, which gives the node's meshes.
+std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file) {
+    const std::vector<PlacedNode> nodes = placed_nodes(doc);
+    const auto& json = doc.json;
+    std::vector<std::size_t> first_primitive;  // per glTF mesh, its first assimp mesh
+    std::size_t next = 0;
+    for (const auto& mesh : json.value("meshes", nlohmann::json::array())) {
+        first_primitive.push_back(next);
+        next += mesh.value("primitives", nlohmann::json::array()).size();
+    }
+    if (next != file.meshes.size()) return 0;  // numbering not as expected: keep assimp's placements
+    std::size_t instances = 0;
+    for (const PlacedNode& placed : nodes) {
+        const auto& node = json["nodes"][std::size_t(placed.node)];
+        if (!node.contains("mesh") || !node.contains("extensions") ||
+            !node["extensions"].contains("EXT_mesh_gpu_instancing"))
+            continue;
+        const auto mesh = node["mesh"].get<std::size_t>();
+        if (mesh >= first_primitive.size()) continue;
+        const auto& attributes = node["extensions"]["EXT_mesh_gpu_instancing"].value("attributes", nlohmann::json::object());
+        std::vector<float> t, r, sc;
+        if (attributes.contains("TRANSLATION")) t = read_floats(doc, attributes["TRANSLATION"].get<std::size_t>(), 3);
+        if (attributes.contains("ROTATION")) r = read_floats(doc, attributes["ROTATION"].get<std::size_t>(), 4);
+        if (attributes.contains("SCALE")) sc = read_floats(doc, attributes["SCALE"].get<std::size_t>(), 3);
+        const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
+        if (count == 0) continue;
+        const std::size_t lo = first_primitive[mesh], hi = lo + json["meshes"][mesh]["primitives"].size();
+        // Drop assimp's single placement of this node (same meshes, same world matrix).
+        std::erase_if(file.placements, [&](const MeshPlacement& p) {
+            return p.mesh >= lo && p.mesh < hi && p.file_from_mesh == placed.world_from_node;
+        });
+        const std::string name = node.value("name", "node" + std::to_string(placed.node));
+        for (std::size_t i = 0; i < count; ++i) {
+            const Vec3 translation = t.empty() ? Vec3(0.0f) : Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+            const float identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            const float* rotation = r.empty() ? identity : &r[4 * i];
+            const Vec3 scale = sc.empty() ? Vec3(1.0f) : Vec3(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
+            const Matrix4 world = placed.world_from_node * trs_matrix(translation, rotation, scale);
+            for (std::size_t m = lo; m < hi; ++m)
+                if (file.meshes[m]) file.placements.push_back({uint32_t(m), world, name + "#" + std::to_string(i)});
+        }
+        instances += count;
+    }
+    return instances;
 }
 
 }  // namespace glint::gltf

@@ -2,6 +2,7 @@
 /// \file What assimp gets to see of a glTF file: its geometry only, validated. Internal.
 
 #include "gltf_document.h"
+#include "mesh_file.h"
 
 #include <cstdint>
 #include <string>
@@ -21,5 +22,9 @@ namespace glint::gltf {
 /// Per mesh primitive in assimp's numbering (mesh by mesh, primitive by primitive), its
 /// material index (the count of materials for "none").
 [[nodiscard]] std::vector<uint32_t> primitive_materials(const Document& doc);
+
+/// EXT_mesh_gpu_instancing, which assimp 5.2.5 drops: each instanced node's placement in
+/// `file` becomes one placement per instance. Returns the number of instances placed.
+std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file);
 
 }  // namespace glint::gltf

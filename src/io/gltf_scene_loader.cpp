@@ -114,54 +114,6 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
     }
 }
 
-/// EXT_mesh_gpu_instancing, which assimp 5.2.5 drops: the node's assimp placement is
-/// replaced by one placement per instance (node · T·R·S of the instance). assimp numbers
-/// its meshes glTF mesh by mesh, primitive by primitive, which gives the node's meshes.
-std::size_t expand_gpu_instancing(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes,
-                                  MeshFile& file) {
-    const auto& json = doc.json;
-    std::vector<std::size_t> first_primitive;  // per glTF mesh, its first assimp mesh
-    std::size_t next = 0;
-    for (const auto& mesh : json.value("meshes", nlohmann::json::array())) {
-        first_primitive.push_back(next);
-        next += mesh.value("primitives", nlohmann::json::array()).size();
-    }
-    if (next != file.meshes.size()) return 0;  // numbering not as expected: keep assimp's placements
-    std::size_t instances = 0;
-    for (const gltf::PlacedNode& placed : nodes) {
-        const auto& node = json["nodes"][std::size_t(placed.node)];
-        if (!node.contains("mesh") || !node.contains("extensions") ||
-            !node["extensions"].contains("EXT_mesh_gpu_instancing"))
-            continue;
-        const auto mesh = node["mesh"].get<std::size_t>();
-        if (mesh >= first_primitive.size()) continue;
-        const auto& attributes = node["extensions"]["EXT_mesh_gpu_instancing"].value("attributes", nlohmann::json::object());
-        std::vector<float> t, r, sc;
-        if (attributes.contains("TRANSLATION")) t = gltf::read_floats(doc, attributes["TRANSLATION"].get<std::size_t>(), 3);
-        if (attributes.contains("ROTATION")) r = gltf::read_floats(doc, attributes["ROTATION"].get<std::size_t>(), 4);
-        if (attributes.contains("SCALE")) sc = gltf::read_floats(doc, attributes["SCALE"].get<std::size_t>(), 3);
-        const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
-        if (count == 0) continue;
-        const std::size_t lo = first_primitive[mesh], hi = lo + json["meshes"][mesh]["primitives"].size();
-        // Drop assimp's single placement of this node (same meshes, same world matrix).
-        std::erase_if(file.placements, [&](const MeshPlacement& p) {
-            return p.mesh >= lo && p.mesh < hi && p.file_from_mesh == placed.world_from_node;
-        });
-        const std::string name = node.value("name", "node" + std::to_string(placed.node));
-        for (std::size_t i = 0; i < count; ++i) {
-            const Vec3 translation = t.empty() ? Vec3(0.0f) : Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
-            const float identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-            const float* rotation = r.empty() ? identity : &r[4 * i];
-            const Vec3 scale = sc.empty() ? Vec3(1.0f) : Vec3(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
-            const Matrix4 world = placed.world_from_node * gltf::trs_matrix(translation, rotation, scale);
-            for (std::size_t m = lo; m < hi; ++m)
-                if (file.meshes[m]) file.placements.push_back({uint32_t(m), world, name + "#" + std::to_string(i)});
-        }
-        instances += count;
-    }
-    return instances;
-}
-
 /// Skins, morph targets and animations: the geometry reader never sees them (it is given
 /// the geometry only), so they are reported from the JSON.
 void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, gltf::Notes& notes) {
@@ -234,7 +186,7 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
 
     const std::vector<gltf::PlacedNode> nodes = gltf::placed_nodes(doc);
     note_animation(doc, nodes, notes);
-    const std::size_t gpu_instances = expand_gpu_instancing(doc, nodes, file);
+    const std::size_t gpu_instances = file.gpu_instances;
     if (gpu_instances > 0)
         notes.mapped("EXT_mesh_gpu_instancing: " + std::to_string(gpu_instances) + " instance(s) placed");
 

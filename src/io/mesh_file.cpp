@@ -243,6 +243,7 @@ MeshFile read_gltf_geometry(const gltf::Document& doc) {
         throw SceneError(doc.path.string() + ": assimp returned " + std::to_string(file.mesh_materials.size()) +
                          " meshes for " + std::to_string(materials.size()) + " primitives (expected one each)");
     file.mesh_materials = std::move(materials);
+    file.gpu_instances = gltf::expand_gpu_instancing(doc, file);
     return file;
 }
 

@@ -41,6 +41,8 @@ struct MeshFile {
     std::vector<std::string> skinned_meshes;
     std::vector<std::string> morphed_meshes;
     std::size_t animations = 0;
+    /// glTF EXT_mesh_gpu_instancing instances placed (read_gltf_geometry).
+    std::size_t gpu_instances = 0;
 };
 
 /// The warning lines for `file`'s skins, morph targets and animations ("path: ...").
