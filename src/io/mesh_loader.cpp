@@ -86,28 +86,29 @@ MeshCache& implicit_cache(const Scene& scene) {
     return cache;
 }
 
-std::vector<uint32_t> add_file_materials(Scene& scene, MeshCache::Entry& entry, const std::filesystem::path& path,
-                                         std::vector<std::string>& warnings) {
+/// Convert `file`'s materials into `scene`; returns the scene material of each file material.
+/// glTF materials come from the JSON and may put alpha masks on `meshes`.
+std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, bool is_gltf,
+                                         const std::vector<std::shared_ptr<TriangleMesh>>& meshes,
+                                         const std::filesystem::path& path, std::vector<std::string>& warnings) {
     std::vector<uint32_t> result;
-    if (entry.is_gltf) {
+    if (is_gltf) {
         const gltf::Document doc = gltf::read_document(path);
         gltf::Notes notes;
         gltf::MaterialConverter converter(doc, scene, notes);
-        for (std::size_t m = 0; m < entry.meshes.size(); ++m) {
-            const uint32_t file_material = entry.file.mesh_materials[m];
+        for (std::size_t m = 0; m < meshes.size(); ++m) {
+            const uint32_t file_material = file.mesh_materials[m];
             if (result.size() <= file_material) result.resize(file_material + 1, 0);
             const gltf::MaterialInfo& info = converter.material(int(file_material));
             result[file_material] = info.scene_material;
-            if (const auto mesh = entry.meshes[m].lock(); mesh && info.alpha_mask)
-                mesh->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
+            if (meshes[m] && info.alpha_mask) meshes[m]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
         }
         for (const std::string& line : notes.ignored_lines()) warnings.push_back(path.string() + ": ignored " + line);
         return result;
     }
-    for (std::size_t i = 0; i < entry.file.materials.size(); ++i) {
-        Material m = entry.file.materials[i];
-        if (entry.file.material_images[i])
-            m.texture = scene.add_texture(std::make_unique<ImageTexture>(entry.file.material_images[i]));
+    for (std::size_t i = 0; i < file.materials.size(); ++i) {
+        Material m = file.materials[i];
+        if (file.material_images[i]) m.texture = scene.add_texture(std::make_unique<ImageTexture>(file.material_images[i]));
         result.push_back(scene.add_material(std::move(m)));
     }
     return result;
@@ -178,7 +179,7 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
         entry = &files.insert(key, std::move(fresh));
     }
     if (!override_material && !entry->scene_materials)
-        entry->scene_materials = add_file_materials(scene, *entry, path, result.warnings);
+        entry->scene_materials = add_file_materials(scene, entry->file, entry->is_gltf, meshes, path, result.warnings);
 
     for (const MeshPlacement& placement : entry->file.placements) {
         Transform file_from_mesh;

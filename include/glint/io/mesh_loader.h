@@ -28,6 +28,19 @@ struct MeshImportResult {
     std::vector<std::string> warnings;
 };
 
+class MeshCache;
+
+/// Add the file's meshes to `scene` as objects placed by `world_from_file` (node transforms
+/// of the file applied below it). With `override_material` every mesh uses that scene
+/// material; otherwise the file's materials are converted and added to the scene (glTF
+/// files through the same conversion as `glint render model.glb`, docs/assets.md).
+/// Without a `cache`, a cache private to `scene` is used, so repeated calls for one path
+/// within one scene read the file once either way. Throws SceneError naming the file and
+/// the problem; problems it can work around (bad triangles, a missing texture) become
+/// warnings in the result.
+MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
+                                  std::optional<uint32_t> override_material, MeshCache* cache = nullptr);
+
 /// Files already read for one scene: each file is read once and its meshes (and, once
 /// converted, its materials) are shared by every later placement of the same path.
 /// Use one cache per Scene; it holds scene material indices. It holds the meshes weakly
@@ -41,29 +54,20 @@ public:
 
     /// Number of distinct files read (live or not).
     [[nodiscard]] std::size_t size() const { return entries_.size(); }
-
-    struct Entry;  ///< one file's meshes and converted materials (defined in mesh_loader.cpp)
-    /// The entry for `path` (canonical form), null if not read yet.
-    [[nodiscard]] Entry* find(const std::filesystem::path& path) const;
-    Entry& insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry);
     /// True if `scene` holds a mesh of this cache (the cache was filled for it).
     [[nodiscard]] bool holds_meshes_of(const Scene& scene) const;
     /// True if any mesh of this cache is still alive.
     [[nodiscard]] bool alive() const;
 
 private:
+    friend MeshImportResult import_mesh_file(Scene&, const std::filesystem::path&, const Transform&,
+                                             std::optional<uint32_t>, MeshCache*);
+    struct Entry;  // one file's meshes and converted materials (mesh_loader.cpp)
+    /// The live entry for `path` (canonical form), null if not read yet or stale.
+    [[nodiscard]] Entry* find(const std::filesystem::path& path) const;
+    Entry& insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry);
+
     std::map<std::string, std::unique_ptr<Entry>> entries_;
 };
-
-/// Add the file's meshes to `scene` as objects placed by `world_from_file` (node transforms
-/// of the file applied below it). With `override_material` every mesh uses that scene
-/// material; otherwise the file's materials are converted and added to the scene (glTF
-/// files through the same conversion as `glint render model.glb`, docs/assets.md).
-/// Without a `cache`, a cache private to `scene` is used, so repeated calls for one path
-/// within one scene read the file once either way. Throws SceneError naming the file and
-/// the problem; problems it can work around (bad triangles, a missing texture) become
-/// warnings in the result.
-MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
-                                  std::optional<uint32_t> override_material, MeshCache* cache = nullptr);
 
 }  // namespace glint
