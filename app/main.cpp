@@ -1,12 +1,13 @@
 // glint: the command-line front end of libglint. It parses arguments, loads a scene,
 // renders it and writes the image; everything else lives in the library.
 
+#include "info_command.h"
 #include "progress_bar.h"
+#include "scene_source.h"
 
 #include "glint/image/image_io.h"
 #include "glint/integrators/whitted_integrator.h"
 #include "glint/io/scene_file.h"
-#include "glint/scene/default_scene.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -24,6 +25,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 
 struct RenderOptions {
     std::string scene_path;
+    glint::app::SceneOptions scene;
     std::string output;
     std::optional<uint32_t> width, height, spp, depth, threads;
     std::optional<uint64_t> seed;
@@ -43,13 +45,8 @@ uint32_t samples_per_axis(uint32_t spp) {
 
 int run_render(const RenderOptions& opt) {
     const auto load_start = Clock::now();
-    glint::LoadedScene loaded;
-    if (opt.scene_path.empty()) {
-        loaded.scene = glint::make_spheres_scene();
-        loaded.settings.samples_per_axis = 2;
-    } else {
-        loaded = glint::load_scene_file(opt.scene_path);
-    }
+    glint::app::SceneSource source = glint::app::load_scene(opt.scene_path, opt.scene);
+    glint::LoadedScene& loaded = source.loaded;
     for (const std::string& w : loaded.warnings) fmt::print(stderr, "warning: {}\n", w);
 
     glint::RenderSettings& s = loaded.settings;
@@ -100,7 +97,8 @@ int main(int argc, char** argv) {
 
     RenderOptions render;
     CLI::App* render_cmd = app.add_subcommand("render", "Render a scene file (or the built-in spheres scene) to an image");
-    render_cmd->add_option("scene", render.scene_path, "Scene file (.toml); none renders the built-in scene")
+    render_cmd->add_option("scene", render.scene_path,
+                           "Scene file (.toml, .gltf/.glb, or a mesh: .ply/.obj/.stl/.fbx); none renders the built-in scene")
         ->check(CLI::ExistingFile);
     render_cmd->add_option("-o,--output", render.output,
                            "Output image: .exr/.hdr/.pfm (linear) or .png/.jpg/.tif (sRGB); default <scene>.png");
@@ -114,6 +112,13 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--filter", render.filter, "Pixel filter")->check(CLI::IsMember({"box", "tent"}));
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG/JPEG/TIFF output");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress bar");
+    glint::app::add_scene_options(render_cmd, render.scene);
+
+    std::string info_path;
+    glint::app::SceneOptions info_options;
+    CLI::App* info_cmd = app.add_subcommand("info", "Print what a scene file holds (and, for glTF, what was mapped)");
+    info_cmd->add_option("scene", info_path, "Scene file")->required()->check(CLI::ExistingFile);
+    glint::app::add_scene_options(info_cmd, info_options);
 
     try {
         app.parse(argc, argv);
@@ -123,6 +128,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*render_cmd) return run_render(render);
+        if (*info_cmd) return glint::app::run_info(info_path, info_options);
     } catch (const std::exception& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());
         return 1;

@@ -1,48 +1,210 @@
 #include "glint/io/mesh_loader.h"
 
+#include "gltf_document.h"
+#include "gltf_materials.h"
+#include "mesh_file.h"
+
 #include "glint/io/scene_file.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <cctype>
+#include <mutex>
+
 namespace glint {
+
+/// One file read for one scene. The meshes are held weakly: the scene's objects own them,
+/// so a cache never keeps a dead scene's geometry in memory, and an entry whose meshes are
+/// all gone is stale (read again).
+struct MeshCache::Entry {
+    /// The file as read; its `meshes` are moved out into `meshes` below after placing.
+    MeshFile file;
+    std::vector<std::weak_ptr<TriangleMesh>> meshes;
+    bool is_gltf = false;
+    /// Scene material per file material (filled on the first placement without override).
+    std::optional<std::vector<uint32_t>> scene_materials;
+
+    [[nodiscard]] bool alive() const {
+        return std::any_of(meshes.begin(), meshes.end(), [](const auto& m) { return !m.expired(); });
+    }
+};
+
+MeshCache::MeshCache() = default;
+MeshCache::MeshCache(MeshCache&&) noexcept = default;
+MeshCache& MeshCache::operator=(MeshCache&&) noexcept = default;
+MeshCache::~MeshCache() = default;
+
+MeshCache::Entry* MeshCache::find(const std::filesystem::path& path) const {
+    const auto it = entries_.find(path.string());
+    return it == entries_.end() || !it->second->alive() ? nullptr : it->second.get();
+}
+
+MeshCache::Entry& MeshCache::insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry) {
+    return *(entries_[path.string()] = std::move(entry));
+}
+
+bool MeshCache::holds_meshes_of(const Scene& scene) const {
+    for (const auto& [path, entry] : entries_)
+        for (const auto& weak : entry->meshes)
+            if (const auto mesh = weak.lock())
+                for (const SceneObject& o : scene.objects())
+                    if (o.shape == mesh) return true;
+    return false;
+}
+
+bool MeshCache::alive() const {
+    return std::any_of(entries_.begin(), entries_.end(), [](const auto& e) { return e.second->alive(); });
+}
 
 namespace {
 
-const aiScene* read_file(Assimp::Importer& importer, const std::filesystem::path& path, unsigned flags) {
-    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
-    const aiScene* ai = importer.ReadFile(path.string(), flags);
-    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneError(path.string() + ": cannot read mesh: " + importer.GetErrorString());
-    return ai;
+bool has_gltf_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".gltf" || ext == ".glb";
+}
+
+std::filesystem::path canonical_key(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto canonical = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path.lexically_normal() : canonical;
+}
+
+/// The caches used when the caller passes none, one per Scene address. An address can be
+/// reused after a scene dies (or is moved from), so a cache is trusted only while that scene
+/// still holds one of its meshes; caches whose meshes all died are dropped.
+std::mutex implicit_mutex;
+std::map<const Scene*, MeshCache> implicit_caches;
+
+MeshCache& implicit_cache(const Scene& scene) {
+    std::erase_if(implicit_caches, [&](const auto& slot) { return slot.first != &scene && !slot.second.alive(); });
+    MeshCache& cache = implicit_caches[&scene];
+    if (!cache.holds_meshes_of(scene)) cache = MeshCache{};
+    return cache;
+}
+
+/// Convert `file`'s materials into `scene`; returns the scene material of each file material.
+/// glTF materials come from the JSON and may put alpha masks on `meshes`.
+std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, bool is_gltf,
+                                         const std::vector<std::shared_ptr<TriangleMesh>>& meshes,
+                                         const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    std::vector<uint32_t> result;
+    if (is_gltf) {
+        const gltf::Document doc = gltf::read_document(path);
+        gltf::Notes notes;
+        gltf::MaterialConverter converter(doc, scene, notes);
+        for (std::size_t m = 0; m < meshes.size(); ++m) {
+            const uint32_t file_material = file.mesh_materials[m];
+            if (result.size() <= file_material) result.resize(file_material + 1, 0);
+            const gltf::MaterialInfo& info = converter.material(int(file_material));
+            result[file_material] = info.scene_material;
+            if (meshes[m] && info.alpha_mask) meshes[m]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
+        }
+        for (const std::string& line : notes.ignored_lines()) warnings.push_back(path.string() + ": ignored " + line);
+        return result;
+    }
+    for (std::size_t i = 0; i < file.materials.size(); ++i) {
+        Material m = file.materials[i];
+        if (file.material_images[i]) m.texture = scene.add_texture(std::make_unique<ImageTexture>(file.material_images[i]));
+        result.push_back(scene.add_material(std::move(m)));
+    }
+    return result;
 }
 
 }  // namespace
 
 MeshData load_mesh_data(const std::filesystem::path& path) {
+    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
     Assimp::Importer importer;
-    const aiScene* ai = read_file(importer, path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    // Only what merging needs: no validation pass, no vertex joining (file order is kept).
+    const aiScene* ai = importer.ReadFile(path.string(), aiProcess_Triangulate);
+    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+        throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
     MeshData data;
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
         const aiMesh* mesh = ai->mMeshes[m];
-        if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
         const auto base = static_cast<uint32_t>(data.positions.size());
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
-            data.positions.emplace_back(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z);
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+            const Vec3 p(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z);
+            if (!is_finite(p))
+                throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": vertex " + std::to_string(v) +
+                                 " has a non-finite position (expected finite coordinates)");
+            data.positions.push_back(p);
+        }
         for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
             const aiFace& face = mesh->mFaces[f];
             if (face.mNumIndices != 3) continue;
-            for (int k = 0; k < 3; ++k) data.indices.push_back(base + face.mIndices[k]);
+            for (unsigned k = 0; k < 3; ++k) {
+                if (face.mIndices[k] >= mesh->mNumVertices)
+                    throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": face " + std::to_string(f) +
+                                     " uses vertex " + std::to_string(face.mIndices[k]) + " (expected an index below " +
+                                     std::to_string(mesh->mNumVertices) + ")");
+                data.indices.push_back(base + face.mIndices[k]);
+            }
         }
     }
-    if (data.indices.empty()) throw SceneError(path.string() + ": the file has no triangles");
+    if (data.indices.empty()) throw SceneError(path.string() + ": the file has no triangles (expected at least one)");
     return data;
 }
 
-MeshImportResult import_mesh_file(Scene&, const std::filesystem::path& path, const Transform&,
-                                  std::optional<uint32_t>) {
-    throw SceneError(path.string() + ": mesh import into scenes is not implemented yet");
+MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
+                                  std::optional<uint32_t> override_material, MeshCache* cache) {
+    if (override_material && *override_material >= scene.materials().size())
+        throw SceneError(path.string() + ": override material " + std::to_string(*override_material) +
+                         " does not exist (the scene has " + std::to_string(scene.materials().size()) + ")");
+    // Loaders run one scene per thread at most, but two scenes may load at once.
+    std::unique_lock<std::mutex> implicit_lock(implicit_mutex, std::defer_lock);
+    if (!cache) implicit_lock.lock();
+    MeshCache& files = cache ? *cache : implicit_cache(scene);
+    const std::filesystem::path key = canonical_key(path);
+    MeshImportResult result;
+    MeshCache::Entry* entry = files.find(key);
+    result.reused = entry != nullptr;
+    // Strong references for this call: the file's meshes live in the scene once placed.
+    std::vector<std::shared_ptr<TriangleMesh>> meshes;
+    if (entry) {
+        for (const auto& weak : entry->meshes) meshes.push_back(weak.lock());
+    } else {
+        auto fresh = std::make_unique<MeshCache::Entry>();
+        fresh->is_gltf = has_gltf_extension(path);
+        fresh->file = fresh->is_gltf ? read_gltf_geometry(gltf::read_document(path)) : read_mesh_file(path, true);
+        result.warnings = fresh->file.warnings;
+        for (std::string& line : animation_warnings(path, fresh->file)) result.warnings.push_back(std::move(line));
+        meshes = std::move(fresh->file.meshes);
+        fresh->file.meshes.clear();
+        fresh->meshes.assign(meshes.begin(), meshes.end());
+        entry = &files.insert(key, std::move(fresh));
+    }
+    if (!override_material && !entry->scene_materials)
+        entry->scene_materials = add_file_materials(scene, entry->file, entry->is_gltf, meshes, path, result.warnings);
+
+    for (const MeshPlacement& placement : entry->file.placements) {
+        Transform file_from_mesh;
+        try {
+            file_from_mesh = Transform(placement.file_from_mesh);
+        } catch (const std::invalid_argument&) {
+            result.warnings.push_back(path.string() + ": node '" + placement.node +
+                                      "' has a singular transform; its mesh is skipped");
+            continue;
+        }
+        uint32_t material = 0;
+        if (override_material) {
+            material = *override_material;
+        } else {
+            const uint32_t file_material = entry->file.mesh_materials[placement.mesh];
+            const auto& table = *entry->scene_materials;
+            material = file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
+        }
+        const auto& mesh = meshes[placement.mesh];
+        if (!mesh) continue;  // never placed before (singular transform), so not kept
+        scene.add_object(mesh, material, world_from_file * file_from_mesh, placement.node);
+        ++result.objects;
+        result.triangles += mesh->triangle_count();
+    }
+    return result;
 }
 
 }  // namespace glint

@@ -6,6 +6,8 @@
 #include "glint/scene/scene.h"
 
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,15 +21,53 @@ namespace glint {
 
 struct MeshImportResult {
     std::size_t objects = 0;
+    /// Triangles placed by this call (instances counted each time).
     std::size_t triangles = 0;
+    /// True if the file was already loaded (through the cache) and only placed again.
+    bool reused = false;
     std::vector<std::string> warnings;
 };
 
+class MeshCache;
+
 /// Add the file's meshes to `scene` as objects placed by `world_from_file` (node transforms
 /// of the file applied below it). With `override_material` every mesh uses that scene
-/// material; otherwise the file's materials are converted and added to the scene.
-/// Throws SceneError naming the file and the problem.
+/// material; otherwise the file's materials are converted and added to the scene (glTF
+/// files through the same conversion as `glint render model.glb`, docs/assets.md).
+/// Without a `cache`, a cache private to `scene` is used, so repeated calls for one path
+/// within one scene read the file once either way. Throws SceneError naming the file and
+/// the problem; problems it can work around (bad triangles, a missing texture) become
+/// warnings in the result.
 MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
-                                  std::optional<uint32_t> override_material);
+                                  std::optional<uint32_t> override_material, MeshCache* cache = nullptr);
+
+/// Files already read for one scene: each file is read once and its meshes (and, once
+/// converted, its materials) are shared by every later placement of the same path.
+/// Use one cache per Scene; it holds scene material indices. It holds the meshes weakly
+/// (the scene owns them): an entry whose meshes all died is read again.
+class MeshCache {
+public:
+    MeshCache();
+    MeshCache(MeshCache&&) noexcept;
+    MeshCache& operator=(MeshCache&&) noexcept;
+    ~MeshCache();
+
+    /// Number of distinct files read (live or not).
+    [[nodiscard]] std::size_t size() const { return entries_.size(); }
+    /// True if `scene` holds a mesh of this cache (the cache was filled for it).
+    [[nodiscard]] bool holds_meshes_of(const Scene& scene) const;
+    /// True if any mesh of this cache is still alive.
+    [[nodiscard]] bool alive() const;
+
+private:
+    friend MeshImportResult import_mesh_file(Scene&, const std::filesystem::path&, const Transform&,
+                                             std::optional<uint32_t>, MeshCache*);
+    struct Entry;  // one file's meshes and converted materials (mesh_loader.cpp)
+    /// The live entry for `path` (canonical form), null if not read yet or stale.
+    [[nodiscard]] Entry* find(const std::filesystem::path& path) const;
+    Entry& insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry);
+
+    std::map<std::string, std::unique_ptr<Entry>> entries_;
+};
 
 }  // namespace glint

@@ -26,7 +26,9 @@ struct LoadedScene {
     std::vector<std::string> warnings;
 };
 
-/// Load by extension: .toml (Glint's own format, docs/scene-format.md). Throws SceneError.
+/// Load by extension: .toml (Glint's own format, docs/scene-format.md), .gltf/.glb (a whole
+/// glTF 2.0 scene, docs/assets.md) or a mesh file (.obj, .ply, .stl, .fbx...: framed by an
+/// automatic camera under the default lighting). Throws SceneError.
 [[nodiscard]] LoadedScene load_scene_file(const std::filesystem::path& path);
 
 }  // namespace glint

@@ -1,0 +1,33 @@
+#pragma once
+/// \file What an asset file that is rendered as a whole scene gets when it lacks a camera
+/// or lights (docs/assets.md, "Defaults").
+
+#include "glint/io/scene_file.h"
+#include "glint/scene/scene.h"
+
+#include <filesystem>
+
+namespace glint {
+
+/// World bounds of every object, computed from shape bounds (valid before prepare()).
+[[nodiscard]] Bounds3 object_bounds(const Scene& scene);
+
+/// A 40° perspective camera that sees all of `bounds` (a sphere around it fits the smaller
+/// field of view for images of `aspect` = width/height), looking along -z from slightly above.
+[[nodiscard]] Camera framing_camera(const Bounds3& bounds, float aspect);
+
+/// Irradiance (Glint units) of the default key light and radiance of the default grey sky:
+/// a white Lambertian surface facing the key light shows 0.75 + 0.2 = 0.95, just below white.
+inline constexpr float kDefaultKeyLight = 0.75f;
+inline constexpr float kDefaultSky = 0.2f;
+
+/// The default lighting: a directional key light of irradiance kDefaultKeyLight from the
+/// camera's upper left, plus a uniform grey environment of radiance kDefaultSky that is both
+/// the background and the ambient light. Uses scene.camera, so set the camera first.
+void add_default_lighting(Scene& scene);
+
+/// A bare mesh file (PLY, OBJ, STL, FBX...) as a scene: its meshes and materials, a framing
+/// camera and the default lighting, 640×480. Throws SceneError.
+[[nodiscard]] LoadedScene load_mesh_scene(const std::filesystem::path& path);
+
+}  // namespace glint

@@ -1,0 +1,51 @@
+#include "glint/io/asset_defaults.h"
+
+#include "glint/io/mesh_loader.h"
+#include "glint/math/constants.h"
+
+#include <cmath>
+
+namespace glint {
+
+Bounds3 object_bounds(const Scene& scene) {
+    Bounds3 b;
+    for (const SceneObject& o : scene.objects())
+        b.extend(o.has_transform ? o.world_from_object.bounds(o.shape->bounds()) : o.shape->bounds());
+    return b;
+}
+
+Camera framing_camera(const Bounds3& bounds, float aspect) {
+    const Vec3 center = bounds.empty() ? Vec3(0.0f) : bounds.center();
+    const float radius = bounds.empty() ? 1.0f : std::max(0.5f * length(bounds.diagonal()), 1e-6f);
+    constexpr float vertical_fov = 40.0f;
+    // The sphere must fit the narrower of the two fields of view.
+    const float half_vertical = radians(vertical_fov) * 0.5f;
+    const float half_horizontal = std::atan(std::tan(half_vertical) * aspect);
+    const float half = std::min(half_vertical, half_horizontal);
+    const float distance = 1.05f * radius / std::sin(half);
+    const Vec3 eye = center + normalize(Vec3(0.0f, 0.35f, 1.0f)) * distance;
+    return Camera::perspective(eye, center, Vec3(0.0f, 1.0f, 0.0f), vertical_fov);
+}
+
+void add_default_lighting(Scene& scene) {
+    const Camera& c = scene.camera;
+    // Travelling forward, down and to the right: the light comes from the camera's upper left.
+    const Vec3 travel = normalize(c.forward() + c.right() * 0.5f - c.up() * 0.7f);
+    scene.add_light(std::make_unique<DirectionalLight>(travel, Color(kDefaultKeyLight)));
+    scene.background = Background::constant(Color(kDefaultSky));
+    scene.ambient_light = Color(kDefaultSky);
+}
+
+LoadedScene load_mesh_scene(const std::filesystem::path& path) {
+    LoadedScene loaded;
+    MeshCache cache;
+    MeshImportResult result = import_mesh_file(loaded.scene, path, Transform(), std::nullopt, &cache);
+    loaded.warnings = std::move(result.warnings);
+    loaded.settings.width = 640;
+    loaded.settings.height = 480;
+    loaded.scene.camera = framing_camera(object_bounds(loaded.scene), 640.0f / 480.0f);
+    add_default_lighting(loaded.scene);
+    return loaded;
+}
+
+}  // namespace glint

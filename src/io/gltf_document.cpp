@@ -1,0 +1,273 @@
+#include "gltf_document.h"
+
+#include "glint/io/scene_file.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iterator>
+
+namespace glint::gltf {
+
+namespace {
+
+constexpr uint32_t kGlbMagic = 0x46546C67;      // "glTF"
+constexpr uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
+constexpr uint32_t kChunkBinary = 0x004E4942;   // "BIN\0"
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+    throw SceneError(path.string() + ": " + what);
+}
+
+std::vector<unsigned char> read_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot open the file");
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+uint32_t read_u32(const std::vector<unsigned char>& bytes, std::size_t offset) {
+    uint32_t v;
+    std::memcpy(&v, bytes.data() + offset, 4);
+    return v;  // GLB is little-endian, as every machine Glint targets
+}
+
+std::vector<unsigned char> decode_base64(std::string_view text) {
+    auto value = [](char c) -> int {
+        if (c >= 'A' && c <= 'Z') return c - 'A';
+        if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+        if (c >= '0' && c <= '9') return c - '0' + 52;
+        if (c == '+' || c == '-') return 62;
+        if (c == '/' || c == '_') return 63;
+        return -1;
+    };
+    std::vector<unsigned char> out;
+    out.reserve(text.size() * 3 / 4);
+    uint32_t acc = 0;
+    int bits = 0;
+    for (char c : text) {
+        const int v = value(c);
+        if (v < 0) continue;  // padding and whitespace
+        acc = (acc << 6) | uint32_t(v);
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            out.push_back(static_cast<unsigned char>((acc >> bits) & 0xFF));
+        }
+    }
+    return out;
+}
+
+/// A URI that is either a data URI or a path relative to the glTF file (percent-escapes decoded).
+std::vector<unsigned char> read_uri(const std::filesystem::path& gltf, const std::string& uri, const char* what,
+                                    std::size_t index) {
+    if (uri.rfind("data:", 0) == 0) {
+        const auto comma = uri.find(',');
+        if (comma == std::string::npos || uri.find(";base64") == std::string::npos)
+            fail(gltf, std::string(what) + " " + std::to_string(index) + ": unsupported data URI (expected base64)");
+        return decode_base64(std::string_view(uri).substr(comma + 1));
+    }
+    std::string decoded;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            decoded += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            decoded += uri[i];
+        }
+    }
+    const std::filesystem::path file = gltf.parent_path() / decoded;
+    if (!std::filesystem::exists(file))
+        fail(gltf, std::string(what) + " " + std::to_string(index) + " '" + uri + "' is missing (expected " +
+                       file.string() + ")");
+    return read_bytes(file);
+}
+
+Matrix4 node_matrix(const nlohmann::json& node) {
+    Matrix4 m = Matrix4::identity();
+    if (node.contains("matrix")) {
+        const auto& a = node["matrix"];
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) m.m[r][c] = a.at(std::size_t(c * 4 + r)).get<float>();  // column-major
+        return m;
+    }
+    Vec3 t(0.0f), s(1.0f);
+    float q[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    if (node.contains("translation"))
+        t = {node["translation"][0].get<float>(), node["translation"][1].get<float>(), node["translation"][2].get<float>()};
+    if (node.contains("scale"))
+        s = {node["scale"][0].get<float>(), node["scale"][1].get<float>(), node["scale"][2].get<float>()};
+    if (node.contains("rotation"))
+        for (int i = 0; i < 4; ++i) q[i] = node["rotation"][std::size_t(i)].get<float>();
+    return trs_matrix(t, q, s);
+}
+
+}  // namespace
+
+Matrix4 trs_matrix(const Vec3& t, const float q[4], const Vec3& s) {
+    Matrix4 m = Matrix4::identity();
+    const float x = q[0], y = q[1], z = q[2], w = q[3];
+    const float r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                           {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                           {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) m.m[i][j] = r[i][j] * s[j];
+        m.m[i][3] = t[i];
+    }
+    return m;
+}
+
+std::vector<float> read_floats(const Document& doc, std::size_t index, int components) {
+    const auto& accessor = doc.json["accessors"].at(index);
+    const std::size_t count = accessor.at("count").get<std::size_t>();
+    const int type = accessor.at("componentType").get<int>();
+    const std::size_t size = type == 5126 || type == 5125 ? 4 : type == 5122 || type == 5123 ? 2 : 1;
+    std::vector<float> out(count * std::size_t(components), 0.0f);
+    if (!accessor.contains("bufferView")) return out;  // all zeros, per spec (sparse not supported)
+    const auto& view = doc.json["bufferViews"].at(accessor["bufferView"].get<std::size_t>());
+    const std::size_t buffer = view.at("buffer").get<std::size_t>();
+    const std::size_t element = size * std::size_t(components);
+    const std::size_t stride = view.value("byteStride", element);
+    const std::size_t begin = view.value("byteOffset", std::size_t(0)) + accessor.value("byteOffset", std::size_t(0));
+    if (count > 0 && (buffer >= doc.buffers.size() || begin + (count - 1) * stride + element > doc.buffers[buffer].size() ||
+                      begin + (count - 1) * stride + element > view.value("byteOffset", std::size_t(0)) + view.at("byteLength").get<std::size_t>()))
+        fail(doc.path, "accessor " + std::to_string(index) + " lies outside its buffer view");
+    const unsigned char* data = doc.buffers[buffer].data() + begin;
+    for (std::size_t i = 0; i < count; ++i)
+        for (int c = 0; c < components; ++c) {
+            const unsigned char* p = data + i * stride + std::size_t(c) * size;
+            float v = 0.0f;
+            switch (type) {
+                case 5126: std::memcpy(&v, p, 4); break;
+                case 5120: v = std::max(float(*reinterpret_cast<const int8_t*>(p)) / 127.0f, -1.0f); break;
+                case 5121: v = float(*p) / 255.0f; break;
+                case 5122: { int16_t x; std::memcpy(&x, p, 2); v = std::max(float(x) / 32767.0f, -1.0f); break; }
+                case 5123: { uint16_t x; std::memcpy(&x, p, 2); v = float(x) / 65535.0f; break; }
+                default: fail(doc.path, "accessor " + std::to_string(index) + " has component type " + std::to_string(type) + " (expected float or normalized integers)");
+            }
+            out[i * std::size_t(components) + std::size_t(c)] = v;
+        }
+    return out;
+}
+
+std::size_t array_size(const nlohmann::json& json, const char* key) {
+    return json.contains(key) && json[key].is_array() ? json[key].size() : 0;
+}
+
+Document read_document(const std::filesystem::path& path) {
+    if (!std::filesystem::exists(path)) fail(path, "no such file");
+    Document doc;
+    doc.path = path;
+    const std::vector<unsigned char> bytes = read_bytes(path);
+    std::vector<unsigned char> bin_chunk;
+    bool has_bin_chunk = false;
+    std::string json_text;
+    doc.binary = bytes.size() >= 4 && read_u32(bytes, 0) == kGlbMagic;
+    if (doc.binary) {
+        if (bytes.size() < 20) fail(path, "truncated GLB: " + std::to_string(bytes.size()) + " bytes (expected a 12-byte header and a JSON chunk)");
+        const uint32_t version = read_u32(bytes, 4), length = read_u32(bytes, 8);
+        if (version != 2) fail(path, "GLB version " + std::to_string(version) + " (expected 2)");
+        if (length > bytes.size())
+            fail(path, "truncated GLB: the header says " + std::to_string(length) + " bytes but the file has " +
+                           std::to_string(bytes.size()));
+        std::size_t offset = 12;
+        for (int chunk = 0; offset + 8 <= length; ++chunk) {
+            const uint32_t chunk_length = read_u32(bytes, offset), type = read_u32(bytes, offset + 4);
+            if (offset + 8 + std::size_t(chunk_length) > length)
+                fail(path, "truncated GLB: chunk " + std::to_string(chunk) + " runs past the end of the file");
+            const auto* begin = bytes.data() + offset + 8;
+            if (chunk == 0 && type != kChunkJson) fail(path, "GLB does not start with a JSON chunk");
+            if (type == kChunkJson && chunk == 0) json_text.assign(begin, begin + chunk_length);
+            if (type == kChunkBinary && !has_bin_chunk) {
+                bin_chunk.assign(begin, begin + chunk_length);
+                has_bin_chunk = true;
+            }
+            offset += 8 + std::size_t(chunk_length);
+        }
+    } else {
+        json_text.assign(bytes.begin(), bytes.end());
+    }
+    try {
+        doc.json = nlohmann::json::parse(json_text);
+    } catch (const nlohmann::json::exception& e) {
+        fail(path, std::string("invalid glTF JSON: ") + e.what());
+    }
+    if (!doc.json.is_object() || !doc.json.contains("asset")) fail(path, "not a glTF 2.0 file (no \"asset\" object)");
+    const std::string version = doc.json["asset"].value("version", "");
+    if (version.rfind("2.", 0) != 0) fail(path, "glTF version '" + version + "' (expected 2.x)");
+
+    const std::size_t buffer_count = array_size(doc.json, "buffers");
+    for (std::size_t b = 0; b < buffer_count; ++b) {
+        const auto& buffer = doc.json["buffers"][b];
+        const std::size_t declared = buffer.value("byteLength", std::size_t(0));
+        std::vector<unsigned char> data;
+        if (buffer.contains("uri")) {
+            data = read_uri(path, buffer["uri"].get<std::string>(), "buffer", b);
+        } else if (b == 0 && has_bin_chunk) {
+            data = std::move(bin_chunk);
+        } else {
+            fail(path, "buffer " + std::to_string(b) + " has no uri and no GLB BIN chunk");
+        }
+        if (data.size() < declared)
+            fail(path, "buffer " + std::to_string(b) + " is truncated: " + std::to_string(data.size()) +
+                           " bytes (expected byteLength " + std::to_string(declared) + ")");
+        doc.buffers.push_back(std::move(data));
+    }
+    return doc;
+}
+
+std::vector<PlacedNode> placed_nodes(const Document& doc) {
+    const auto& json = doc.json;
+    const std::size_t node_count = array_size(json, "nodes");
+    std::vector<int> roots;
+    const std::size_t scene_count = array_size(json, "scenes");
+    if (scene_count > 0) {
+        const std::size_t scene = std::min<std::size_t>(json.value("scene", 0u), scene_count - 1);
+        for (const auto& n : json["scenes"][scene].value("nodes", nlohmann::json::array())) roots.push_back(n.get<int>());
+    } else {
+        std::vector<bool> is_child(node_count, false);
+        for (const auto& node : json.value("nodes", nlohmann::json::array()))
+            for (const auto& c : node.value("children", nlohmann::json::array()))
+                if (c.get<std::size_t>() < node_count) is_child[c.get<std::size_t>()] = true;
+        for (std::size_t i = 0; i < node_count; ++i)
+            if (!is_child[i]) roots.push_back(int(i));
+    }
+    std::vector<PlacedNode> placed;
+    std::vector<bool> on_path(node_count, false);  // guards against cycles in broken files
+    std::function<void(int, const Matrix4&)> visit = [&](int n, const Matrix4& parent) {
+        if (n < 0 || std::size_t(n) >= node_count || on_path[std::size_t(n)]) return;
+        on_path[std::size_t(n)] = true;
+        const auto& node = json["nodes"][std::size_t(n)];
+        const Matrix4 world = parent * node_matrix(node);
+        placed.push_back({n, world});
+        for (const auto& c : node.value("children", nlohmann::json::array())) visit(c.get<int>(), world);
+        on_path[std::size_t(n)] = false;
+    };
+    for (int r : roots) visit(r, Matrix4::identity());
+    return placed;
+}
+
+std::vector<unsigned char> image_bytes(const Document& doc, int index, std::string& name) {
+    const auto& image = doc.json["images"].at(std::size_t(index));
+    const std::string mime = image.value("mimeType", "");
+    if (image.contains("uri")) {
+        const std::string uri = image["uri"].get<std::string>();
+        name = uri.rfind("data:", 0) == 0 ? (uri.find("image/jpeg") != std::string::npos ? "image.jpg" : "image.png")
+                                           : uri;
+        return read_uri(doc.path, uri, "image", std::size_t(index));
+    }
+    const auto view_index = image.at("bufferView").get<std::size_t>();
+    const auto& view = doc.json["bufferViews"].at(view_index);
+    const auto buffer = view.at("buffer").get<std::size_t>();
+    const std::size_t offset = view.value("byteOffset", std::size_t(0)), length = view.at("byteLength").get<std::size_t>();
+    if (buffer >= doc.buffers.size() || offset + length > doc.buffers[buffer].size())
+        fail(doc.path, "image " + std::to_string(index) + ": bufferView " + std::to_string(view_index) +
+                           " lies outside its buffer");
+    name = "image" + std::to_string(index) + (mime == "image/jpeg" ? ".jpg" : ".png");
+    const auto* begin = doc.buffers[buffer].data() + offset;
+    return {begin, begin + length};
+}
+
+}  // namespace glint::gltf

@@ -1,0 +1,56 @@
+#pragma once
+/// \file The raw glTF 2.0 document: its JSON and its buffers, read without assimp.
+///
+/// Why a second reader next to assimp: assimp 5.2.5 turns glTF into its own scene graph and
+/// drops what Glint needs to map the file faithfully (KHR_materials_ior, the extension lists,
+/// which node holds which camera or light, image data it did not reference). The JSON is
+/// small, so reading it with nlohmann-json costs little; the heavy part (accessors, vertex
+/// data) stays with assimp. Internal to libglint.
+
+#include "glint/math/transform.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace glint::gltf {
+
+struct Document {
+    std::filesystem::path path;
+    nlohmann::json json;
+    /// Bytes of each buffer (the GLB's BIN chunk, an external .bin or a data URI).
+    std::vector<std::vector<unsigned char>> buffers;
+    bool binary = false;
+};
+
+/// A node of the default scene with its world-from-node matrix.
+struct PlacedNode {
+    int node = 0;
+    Matrix4 world_from_node;
+};
+
+/// Read a .gltf or .glb and every buffer it references. Throws SceneError naming the file
+/// and the problem (truncated GLB, bad JSON, missing or short .bin).
+[[nodiscard]] Document read_document(const std::filesystem::path& path);
+
+/// Every node reachable from the default scene (or from all root nodes when the file has
+/// no scenes), in depth-first order, with its accumulated transform.
+[[nodiscard]] std::vector<PlacedNode> placed_nodes(const Document& doc);
+
+/// The encoded bytes (PNG, JPEG...) of image `index` and a file name whose extension tells
+/// the decoder the format. Throws SceneError when the image cannot be found.
+[[nodiscard]] std::vector<unsigned char> image_bytes(const Document& doc, int index, std::string& name);
+
+/// Accessor `index` as `components` floats per element (FLOAT, or normalized integer types
+/// mapped to [0, 1] / [-1, 1] as the spec says). Throws SceneError if it lies outside its buffer.
+[[nodiscard]] std::vector<float> read_floats(const Document& doc, std::size_t index, int components);
+
+/// The matrix T·R·S of a translation, a unit quaternion (x, y, z, w) and a scale.
+[[nodiscard]] Matrix4 trs_matrix(const Vec3& translation, const float rotation[4], const Vec3& scale);
+
+/// Size of the array `key` at the top level (0 when absent).
+[[nodiscard]] std::size_t array_size(const nlohmann::json& json, const char* key);
+
+}  // namespace glint::gltf

@@ -1,0 +1,260 @@
+#include "gltf_geometry.h"
+
+#include "glint/io/scene_file.h"
+
+#include <algorithm>
+
+#include <cstring>
+
+namespace glint::gltf {
+
+namespace {
+
+constexpr uint32_t kChunkJson = 0x4E4F534A;    // "JSON"
+constexpr uint32_t kChunkBinary = 0x004E4942;  // "BIN\0"
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+    throw SceneError(path.string() + ": " + what);
+}
+
+std::size_t component_size(int type) {
+    switch (type) {
+        case 5120: case 5121: return 1;
+        case 5122: case 5123: return 2;
+        case 5125: case 5126: return 4;
+        default: return 0;
+    }
+}
+
+std::size_t component_count(const std::string& type) {
+    if (type == "SCALAR") return 1;
+    if (type == "VEC2") return 2;
+    if (type == "VEC3") return 3;
+    if (type == "VEC4" || type == "MAT2") return 4;
+    if (type == "MAT3") return 9;
+    if (type == "MAT4") return 16;
+    return 0;
+}
+
+/// Check that accessor `index`, used by `user`, has data inside its buffer.
+void check_accessor(const Document& doc, std::size_t index, const std::string& user) {
+    const auto& json = doc.json;
+    if (index >= array_size(json, "accessors"))
+        fail(doc.path, user + " uses accessor " + std::to_string(index) + ", which does not exist");
+    const auto& accessor = json["accessors"][index];
+    const std::string where = user + ", accessor " + std::to_string(index);
+    const std::size_t element = component_size(accessor.at("componentType").get<int>()) *
+                                component_count(accessor.at("type").get<std::string>());
+    if (element == 0) fail(doc.path, where + ": unknown componentType or type");
+    if (!accessor.contains("bufferView")) {
+        if (accessor.contains("sparse")) return;
+        fail(doc.path, where + ": no bufferView (compressed geometry such as KHR_draco_mesh_compression is not supported)");
+    }
+    const auto view_index = accessor["bufferView"].get<std::size_t>();
+    if (view_index >= array_size(json, "bufferViews"))
+        fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " does not exist");
+    const auto& view = json["bufferViews"][view_index];
+    const auto buffer = view.at("buffer").get<std::size_t>();
+    const std::size_t view_offset = view.value("byteOffset", std::size_t(0));
+    const std::size_t view_length = view.at("byteLength").get<std::size_t>();
+    if (buffer >= doc.buffers.size() || view_offset + view_length > doc.buffers[buffer].size())
+        fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " lies outside its buffer");
+    const std::size_t count = accessor.at("count").get<std::size_t>();
+    const std::size_t stride = view.value("byteStride", element);
+    if (count > 0 && accessor.value("byteOffset", std::size_t(0)) + (count - 1) * stride + element > view_length)
+        fail(doc.path, where + ": " + std::to_string(count) + " elements do not fit in bufferView " +
+                           std::to_string(view_index) + " (" + std::to_string(view_length) + " bytes)");
+}
+
+/// Number of index values of accessor `index` (already checked) that are >= `vertices`.
+std::size_t count_bad_indices(const Document& doc, std::size_t index, std::size_t vertices) {
+    const auto& accessor = doc.json["accessors"][index];
+    if (!accessor.contains("bufferView")) return 0;
+    const auto& view = doc.json["bufferViews"][accessor["bufferView"].get<std::size_t>()];
+    const std::size_t size = component_size(accessor["componentType"].get<int>());
+    const std::size_t stride = view.value("byteStride", size);
+    const unsigned char* data = doc.buffers[view["buffer"].get<std::size_t>()].data() +
+                                view.value("byteOffset", std::size_t(0)) + accessor.value("byteOffset", std::size_t(0));
+    std::size_t bad = 0;
+    for (std::size_t i = 0, n = accessor["count"].get<std::size_t>(); i < n; ++i) {
+        uint32_t v = 0;
+        std::memcpy(&v, data + i * stride, size);  // little-endian: the low bytes come first
+        bad += v >= vertices;
+    }
+    return bad;
+}
+
+}  // namespace
+
+std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings) {
+    using nlohmann::json;
+    const json& in = doc.json;
+    json out;
+    out["asset"] = {{"version", "2.0"}};
+    if (in.contains("scene")) out["scene"] = in["scene"];
+    if (in.contains("scenes")) {
+        out["scenes"] = json::array();
+        for (const auto& scene : in["scenes"]) out["scenes"].push_back({{"nodes", scene.value("nodes", json::array())}});
+    }
+    const std::size_t mesh_count = array_size(in, "meshes");
+    const std::size_t node_count = array_size(in, "nodes");
+    // The hierarchy must be a forest: a child index that does not exist, a second parent or a
+    // cycle is dropped (assimp would read past the array or recurse forever).
+    std::vector<int> parent(node_count, -1);
+    auto is_ancestor = [&](std::size_t candidate, std::size_t node) {
+        for (int p = int(node); p >= 0; p = parent[std::size_t(p)])
+            if (std::size_t(p) == candidate) return true;
+        return false;
+    };
+    out["nodes"] = json::array();
+    for (std::size_t i = 0; i < node_count; ++i) {
+        const auto& node = in["nodes"][i];
+        json n = json::object();
+        for (const char* key : {"name", "matrix", "translation", "rotation", "scale"})
+            if (node.contains(key)) n[key] = node[key];
+        if (node.contains("mesh")) {
+            if (node["mesh"].get<std::size_t>() >= mesh_count)
+                fail(doc.path, "node " + std::to_string(i) + " uses mesh " + std::to_string(node["mesh"].get<std::size_t>()) +
+                                   ", which does not exist");
+            n["mesh"] = node["mesh"];
+        }
+        json children = json::array();
+        for (const auto& c : node.value("children", json::array())) {
+            const auto child = c.get<std::size_t>();
+            if (child >= node_count || parent[child] >= 0 || is_ancestor(child, i)) continue;
+            parent[child] = int(i);
+            children.push_back(child);
+        }
+        if (!children.empty()) n["children"] = std::move(children);
+        out["nodes"].push_back(std::move(n));
+    }
+    if (out.contains("scenes"))
+        for (auto& scene : out["scenes"]) {
+            json roots = json::array();
+            for (const auto& r : scene["nodes"])
+                if (r.get<std::size_t>() < node_count && parent[r.get<std::size_t>()] < 0) roots.push_back(r);
+            scene["nodes"] = std::move(roots);
+        }
+    out["meshes"] = json::array();
+    for (std::size_t m = 0; m < mesh_count; ++m) {
+        const auto& mesh = in["meshes"][m];
+        json primitives = json::array();
+        std::size_t p = 0;
+        for (const auto& primitive : mesh.at("primitives")) {
+            const std::string user = "mesh " + std::to_string(m) + " primitive " + std::to_string(p++);
+            json kept = {{"attributes", primitive.at("attributes")}};
+            if (!primitive["attributes"].contains("POSITION")) fail(doc.path, user + " has no POSITION attribute");
+            for (const auto& [name, accessor] : primitive["attributes"].items())
+                check_accessor(doc, accessor.get<std::size_t>(), user + " attribute " + name);
+            if (primitive.contains("indices")) {
+                const auto indices = primitive["indices"].get<std::size_t>();
+                check_accessor(doc, indices, user + " indices");
+                const auto vertices = in["accessors"][primitive["attributes"]["POSITION"].get<std::size_t>()]["count"];
+                if (const std::size_t bad = count_bad_indices(doc, indices, vertices.get<std::size_t>()); bad > 0)
+                    warnings.push_back(doc.path.string() + ": " + user + ": " + std::to_string(bad) +
+                                       " out-of-range vertex index(es) (expected below " +
+                                       std::to_string(vertices.get<std::size_t>()) + "); their triangles are dropped");
+                kept["indices"] = indices;
+            }
+            if (primitive.contains("mode")) kept["mode"] = primitive["mode"];
+            primitives.push_back(std::move(kept));
+        }
+        json kept_mesh = {{"primitives", std::move(primitives)}};
+        if (mesh.contains("name")) kept_mesh["name"] = mesh["name"];
+        out["meshes"].push_back(std::move(kept_mesh));
+    }
+    if (in.contains("accessors")) out["accessors"] = in["accessors"];
+
+    // One merged buffer: every buffer 4-byte aligned, bufferViews shifted to match.
+    std::vector<std::size_t> base;
+    std::string bin;
+    for (const auto& buffer : doc.buffers) {
+        base.push_back(bin.size());
+        bin.append(reinterpret_cast<const char*>(buffer.data()), buffer.size());
+        while (bin.size() % 4) bin += '\0';
+    }
+    out["bufferViews"] = json::array();
+    for (const auto& view : in.value("bufferViews", json::array())) {
+        json v = json::object();
+        const auto buffer = view.at("buffer").get<std::size_t>();
+        if (buffer >= base.size()) fail(doc.path, "a bufferView uses buffer " + std::to_string(buffer) + ", which does not exist");
+        v["buffer"] = 0;
+        v["byteOffset"] = base[buffer] + view.value("byteOffset", std::size_t(0));
+        v["byteLength"] = view.at("byteLength");
+        if (view.contains("byteStride")) v["byteStride"] = view["byteStride"];
+        out["bufferViews"].push_back(std::move(v));
+    }
+    out["buffers"] = json::array({{{"byteLength", bin.size()}}});
+
+    std::string text = out.dump();
+    while (text.size() % 4) text += ' ';
+    auto u32 = [](std::size_t v) {
+        const auto x = static_cast<uint32_t>(v);
+        return std::string(reinterpret_cast<const char*>(&x), 4);
+    };
+    std::string glb = "glTF" + u32(2) + u32(12 + 8 + text.size() + 8 + bin.size());
+    glb += u32(text.size()) + u32(kChunkJson) + text;
+    glb += u32(bin.size()) + u32(kChunkBinary) + bin;
+    return glb;
+}
+
+std::vector<uint32_t> primitive_materials(const Document& doc) {
+    std::vector<uint32_t> result;
+    const auto none = static_cast<uint32_t>(array_size(doc.json, "materials"));
+    for (const auto& mesh : doc.json.value("meshes", nlohmann::json::array()))
+        for (const auto& primitive : mesh.value("primitives", nlohmann::json::array())) {
+            const auto m = primitive.value("material", std::size_t(none));
+            result.push_back(m < none ? static_cast<uint32_t>(m) : none);
+        }
+    return result;
+}
+
+/// EXT_mesh_gpu_instancing, which assimp 5.2.5 drops: the node's assimp placement is
+/// replaced by one placement per instance (node · T·R·S of the instance). assimp numbers
+/// its meshes glTF mesh by mesh, primitive by primitive, which gives the node's meshes.
+std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file) {
+    const std::vector<PlacedNode> nodes = placed_nodes(doc);
+    const auto& json = doc.json;
+    std::vector<std::size_t> first_primitive;  // per glTF mesh, its first assimp mesh
+    std::size_t next = 0;
+    for (const auto& mesh : json.value("meshes", nlohmann::json::array())) {
+        first_primitive.push_back(next);
+        next += mesh.value("primitives", nlohmann::json::array()).size();
+    }
+    if (next != file.meshes.size()) return 0;  // numbering not as expected: keep assimp's placements
+    std::size_t instances = 0;
+    for (const PlacedNode& placed : nodes) {
+        const auto& node = json["nodes"][std::size_t(placed.node)];
+        if (!node.contains("mesh") || !node.contains("extensions") ||
+            !node["extensions"].contains("EXT_mesh_gpu_instancing"))
+            continue;
+        const auto mesh = node["mesh"].get<std::size_t>();
+        if (mesh >= first_primitive.size()) continue;
+        const auto& attributes = node["extensions"]["EXT_mesh_gpu_instancing"].value("attributes", nlohmann::json::object());
+        std::vector<float> t, r, sc;
+        if (attributes.contains("TRANSLATION")) t = read_floats(doc, attributes["TRANSLATION"].get<std::size_t>(), 3);
+        if (attributes.contains("ROTATION")) r = read_floats(doc, attributes["ROTATION"].get<std::size_t>(), 4);
+        if (attributes.contains("SCALE")) sc = read_floats(doc, attributes["SCALE"].get<std::size_t>(), 3);
+        const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
+        if (count == 0) continue;
+        const std::size_t lo = first_primitive[mesh], hi = lo + json["meshes"][mesh]["primitives"].size();
+        // Drop assimp's single placement of this node (same meshes, same world matrix).
+        std::erase_if(file.placements, [&](const MeshPlacement& p) {
+            return p.mesh >= lo && p.mesh < hi && p.file_from_mesh == placed.world_from_node;
+        });
+        const std::string name = node.value("name", "node" + std::to_string(placed.node));
+        for (std::size_t i = 0; i < count; ++i) {
+            const Vec3 translation = t.empty() ? Vec3(0.0f) : Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+            const float identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            const float* rotation = r.empty() ? identity : &r[4 * i];
+            const Vec3 scale = sc.empty() ? Vec3(1.0f) : Vec3(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
+            const Matrix4 world = placed.world_from_node * trs_matrix(translation, rotation, scale);
+            for (std::size_t m = lo; m < hi; ++m)
+                if (file.meshes[m]) file.placements.push_back({uint32_t(m), world, name + "#" + std::to_string(i)});
+        }
+        instances += count;
+    }
+    return instances;
+}
+
+}  // namespace glint::gltf

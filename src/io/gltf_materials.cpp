@@ -1,0 +1,176 @@
+#include "gltf_materials.h"
+
+#include "gltf_image.h"
+
+#include "glint/io/scene_file.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint::gltf {
+
+namespace {
+
+Color color3(const nlohmann::json& j, const char* key, Color fallback) {
+    if (!j.contains(key) || !j[key].is_array() || j[key].size() < 3) return fallback;
+    return {j[key][0].get<float>(), j[key][1].get<float>(), j[key][2].get<float>()};
+}
+
+const nlohmann::json& extension(const nlohmann::json& material, const char* name) {
+    static const nlohmann::json empty = nlohmann::json::object();
+    if (material.contains("extensions") && material["extensions"].contains(name)) return material["extensions"][name];
+    return empty;
+}
+
+/// Extensions whose content this converter reads (fully or in part, docs/assets.md).
+bool is_mapped_material_extension(const std::string& name) {
+    return name == "KHR_materials_transmission" || name == "KHR_materials_ior" ||
+           name == "KHR_materials_emissive_strength";
+}
+
+}  // namespace
+
+void MaterialConverter::convert_all() {
+    const std::size_t count = array_size(doc_.json, "materials");
+    for (std::size_t i = 0; i < count; ++i) material(int(i));
+}
+
+const MaterialInfo& MaterialConverter::material(int index) {
+    if (index < 0 || std::size_t(index) >= array_size(doc_.json, "materials")) index = -1;
+    auto it = converted_.find(index);
+    if (it == converted_.end()) it = converted_.emplace(index, convert(index)).first;
+    return it->second;
+}
+
+std::shared_ptr<const Image> MaterialConverter::image(int index) {
+    auto it = images_.find(index);
+    if (it != images_.end()) return it->second;
+    std::shared_ptr<const Image> result;
+    std::string name;
+    try {
+        const std::vector<unsigned char> bytes = image_bytes(doc_, index, name);
+        result = std::make_shared<const Image>(decode_image(bytes, name));
+    } catch (const std::exception& e) {
+        // A missing or broken texture costs the material its texture, not the render.
+        notes_.ignored("texture image " + std::to_string(index) + " could not be read: " + e.what(), "");
+    }
+    images_[index] = result;
+    return result;
+}
+
+const Texture* MaterialConverter::texture(const nlohmann::json& info, const std::string& material_name,
+                                          const char* slot) {
+    if (!info.is_object() || !info.contains("index")) return nullptr;
+    if (info.value("texCoord", 0) != 0)
+        notes_.ignored(std::string("texCoord set other than 0 (") + slot + "): set 0 used", material_name);
+    if (info.contains("extensions") && info["extensions"].contains("KHR_texture_transform"))
+        notes_.ignored("KHR_texture_transform (texture offset/scale/rotation)", material_name);
+    const int t = info["index"].get<int>();
+    auto it = textures_.find(t);
+    if (it != textures_.end()) return it->second;
+    const Texture* result = nullptr;
+    if (t >= 0 && std::size_t(t) < array_size(doc_.json, "textures")) {
+        const auto& tex = doc_.json["textures"][std::size_t(t)];
+        if (tex.contains("source")) {
+            if (auto img = image(tex["source"].get<int>())) {
+                WrapMode wrap = WrapMode::Repeat;
+                if (tex.contains("sampler") && tex["sampler"].get<std::size_t>() < array_size(doc_.json, "samplers")) {
+                    const int wrap_s = doc_.json["samplers"][tex["sampler"].get<std::size_t>()].value("wrapS", 10497);
+                    if (wrap_s == 33071) wrap = WrapMode::Clamp;  // CLAMP_TO_EDGE; MIRRORED_REPEAT maps to repeat
+                }
+                result = scene_.add_texture(std::make_unique<ImageTexture>(std::move(img), wrap));
+            }
+        } else {
+            notes_.ignored("texture without a PNG/JPEG source (e.g. KHR_texture_basisu only)", material_name);
+        }
+    }
+    textures_[t] = result;
+    return result;
+}
+
+MaterialInfo MaterialConverter::convert(int index) {
+    static const nlohmann::json default_material = nlohmann::json::object();
+    const nlohmann::json& j = index < 0 ? default_material : doc_.json["materials"][std::size_t(index)];
+    Material m;
+    m.name = index < 0 ? "gltf_default" : j.value("name", "material" + std::to_string(index));
+    const std::string& name = m.name;
+    const nlohmann::json pbr = j.value("pbrMetallicRoughness", nlohmann::json::object());
+
+    Color base(1.0f);
+    float alpha = 1.0f;
+    if (pbr.contains("baseColorFactor") && pbr["baseColorFactor"].size() >= 4) {
+        base = color3(pbr, "baseColorFactor", base);
+        alpha = pbr["baseColorFactor"][3].get<float>();
+    }
+    const float metallic = std::clamp(pbr.value("metallicFactor", 1.0f), 0.0f, 1.0f);
+    const float roughness = std::clamp(pbr.value("roughnessFactor", 1.0f), 0.0f, 1.0f);
+    const Texture* base_texture = texture(pbr.value("baseColorTexture", nlohmann::json()), name, "baseColorTexture");
+
+    // Metallic-roughness to Whitted: the mirror is Schlick's Fresnel with
+    // F0 = mix(0.04, base, metallic). A Whitted tracer cannot blur a reflection, so a
+    // share `roughness` of a metal's reflection becomes diffuse (rough metals look matte,
+    // not like black mirrors) and rough dielectrics lose their 4% mirror.
+    const float smooth = 1.0f - roughness;
+    m.diffuse = base * (1.0f - metallic) + base * (metallic * roughness);
+    m.ambient = m.diffuse;
+    m.texture = base_texture;
+    m.reflectivity = lerp(metallic, Color(0.04f * smooth * smooth), base * smooth);
+    m.fresnel_mirror = true;
+    // A Blinn-Phong highlight stands in for the microfacet lobe under point lights
+    // (exponent from the usual α = roughness² mapping, s = 2/α² − 2).
+    const float a = std::max(roughness * roughness, 1e-3f);
+    m.shininess = std::clamp(2.0f / (a * a) - 2.0f, 1.0f, 1e4f);
+    m.specular = roughness < 1.0f ? lerp(metallic, Color(0.04f), base) : Color(0.0f);
+    m.roughness = roughness;
+    if (pbr.contains("metallicRoughnessTexture"))
+        notes_.ignored("metallicRoughnessTexture (factors used)", name);
+
+    // Emission: factor × KHR_materials_emissive_strength × texture, as radiance.
+    const float strength = extension(j, "KHR_materials_emissive_strength").value("emissiveStrength", 1.0f);
+    m.emission = color3(j, "emissiveFactor", Color(0.0f)) * strength;
+    if (j.contains("emissiveTexture")) {
+        m.emission_texture = texture(j["emissiveTexture"], name, "emissiveTexture");
+        if (m.emission.is_black() && m.emission_texture) m.emission_texture = nullptr;  // factor 0 turns it off
+    }
+
+    // KHR_materials_transmission + KHR_materials_ior: a Whitted dielectric.
+    const auto& transmission = extension(j, "KHR_materials_transmission");
+    m.transparency = std::clamp(transmission.value("transmissionFactor", 0.0f), 0.0f, 1.0f);
+    if (transmission.contains("transmissionTexture")) notes_.ignored("transmissionTexture (factor used)", name);
+    m.ior = extension(j, "KHR_materials_ior").value("ior", 1.5f);
+    if (!(m.ior >= 1.0f)) m.ior = 1.0f;  // ior 0 ("no refraction") is not a physical index
+
+    MaterialInfo info;
+    info.double_sided = j.value("doubleSided", false);
+    const std::string alpha_mode = j.value("alphaMode", "OPAQUE");
+    if (alpha_mode == "MASK" || alpha_mode == "BLEND") {
+        info.alpha_cutoff = alpha_mode == "MASK" ? j.value("alphaCutoff", 0.5f) : 0.5f;
+        if (base_texture) {
+            info.alpha_mask = base_texture;
+            m.alpha_texture = base_texture;
+            m.alpha_cutoff = info.alpha_cutoff;
+        }
+        if (alpha_mode == "BLEND") {
+            // No blending in a Whitted tracer: a textured alpha becomes a cut-out and the
+            // surface a see-through layer (transparency 1 - alpha, index 1, so rays pass
+            // straight on). It is never fully opaque (at least one 8-bit alpha step), so,
+            // like every Glint dielectric, it casts no shadow: the rasterizers glTF targets
+            // leave blended surfaces out of their shadow maps, and lamps model their shades so.
+            notes_.ignored("alphaMode BLEND (approximated: see-through layer without shadows, cut-out at 0.5)", name);
+            if (m.transparency == 0.0f) {
+                m.transparency = std::max(1.0f - std::clamp(alpha, 0.0f, 1.0f), 1.0f / 255.0f);
+                m.ior = 1.0f;
+            }
+        }
+    }
+    if (j.contains("normalTexture")) notes_.ignored("normalTexture (no normal mapping; geometric normals used)", name);
+    if (j.contains("occlusionTexture")) notes_.ignored("occlusionTexture (no ambient occlusion)", name);
+    if (j.contains("extensions"))
+        for (const auto& [ext, value] : j["extensions"].items())
+            if (!is_mapped_material_extension(ext)) notes_.ignored("material extension " + ext, name);
+
+    info.scene_material = scene_.add_material(std::move(m));
+    return info;
+}
+
+}  // namespace glint::gltf

@@ -1,0 +1,55 @@
+#pragma once
+/// \file glTF metallic-roughness materials to Glint's Whitted material (docs/assets.md). Internal.
+
+#include "gltf_document.h"
+#include "gltf_notes.h"
+
+#include "glint/scene/scene.h"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace glint::gltf {
+
+/// A converted material and what the mesh using it must know.
+struct MaterialInfo {
+    uint32_t scene_material = 0;
+    /// alphaMode MASK (and BLEND with a textured alpha): the mesh's cut-out mask.
+    const Texture* alpha_mask = nullptr;
+    float alpha_cutoff = 0.5f;
+    bool double_sided = false;
+};
+
+class MaterialConverter {
+public:
+    MaterialConverter(const Document& doc, Scene& scene, Notes& notes) : doc_(doc), scene_(scene), notes_(notes) {}
+
+    /// Convert every material of the file into the scene, in file order.
+    void convert_all();
+    /// Material `index` of the file (converting it if needed); -1 or out of range gives
+    /// glTF's default material (white, metallic 1, roughness 1 per spec; see docs/assets.md).
+    const MaterialInfo& material(int index);
+    /// Distinct textures added to the scene.
+    [[nodiscard]] std::size_t texture_count() const {
+        return std::size_t(std::count_if(textures_.begin(), textures_.end(), [](const auto& t) { return t.second; }));
+    }
+
+private:
+    MaterialInfo convert(int index);
+    /// Texture `info` ({"index", "texCoord"}) as a scene texture; null (with a warning) when
+    /// it cannot be decoded.
+    const Texture* texture(const nlohmann::json& info, const std::string& material_name, const char* slot);
+    std::shared_ptr<const Image> image(int index);
+
+    const Document& doc_;
+    Scene& scene_;
+    Notes& notes_;
+    std::map<int, MaterialInfo> converted_;
+    std::map<int, const Texture*> textures_;
+    std::map<int, std::shared_ptr<const Image>> images_;
+};
+
+}  // namespace glint::gltf

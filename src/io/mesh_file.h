@@ -1,0 +1,65 @@
+#pragma once
+/// \file A mesh file read through assimp into Glint meshes, before placing it in a scene.
+/// Internal: import_mesh_file() and the glTF scene loader share it.
+
+#include "glint/geometry/triangle_mesh.h"
+#include "glint/image/image.h"
+#include "glint/materials/material.h"
+#include "glint/math/transform.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glint {
+
+/// One node of the file that draws mesh `mesh`.
+struct MeshPlacement {
+    uint32_t mesh = 0;
+    Matrix4 file_from_mesh = Matrix4::identity();
+    std::string node;
+};
+
+struct MeshFile {
+    /// One per assimp mesh (a glTF primitive); null when it had no usable triangles.
+    std::vector<std::shared_ptr<TriangleMesh>> meshes;
+    /// The file's material index of each mesh (for glTF: the JSON index, or the count of
+    /// JSON materials for "no material").
+    std::vector<uint32_t> mesh_materials;
+    std::vector<MeshPlacement> placements;
+    /// Distinct meshes as the file groups them (a glTF mesh with several primitives is one).
+    std::size_t distinct_meshes = 0;
+    /// The file's materials as assimp describes them (used for every format but glTF), and
+    /// the decoded diffuse texture of each (null for none).
+    std::vector<Material> materials;
+    std::vector<std::shared_ptr<const Image>> material_images;
+    /// Problems worked around (dropped triangles, missing textures), one line each.
+    std::vector<std::string> warnings;
+    /// What the file animates, which Glint draws at rest: names of skinned meshes and of
+    /// meshes with morph targets, and the number of animations. Callers word the warnings.
+    std::vector<std::string> skinned_meshes;
+    std::vector<std::string> morphed_meshes;
+    std::size_t animations = 0;
+    /// glTF EXT_mesh_gpu_instancing instances placed (read_gltf_geometry).
+    std::size_t gpu_instances = 0;
+};
+
+/// The warning lines for `file`'s skins, morph targets and animations ("path: ...").
+[[nodiscard]] std::vector<std::string> animation_warnings(const std::filesystem::path& path, const MeshFile& file);
+
+/// Read `path` with assimp. `convert_materials`: also convert assimp's materials (glTF
+/// files convert theirs from the JSON instead). Throws SceneError naming the file and the
+/// problem when nothing usable is in it.
+[[nodiscard]] MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_materials);
+
+namespace gltf {
+struct Document;
+}
+
+/// The geometry of a glTF document through assimp (gltf::geometry_glb explains why assimp
+/// sees only the geometry); `mesh_materials` are the JSON material indices. No materials
+/// are converted. Throws SceneError.
+[[nodiscard]] MeshFile read_gltf_geometry(const gltf::Document& doc);
+
+}  // namespace glint

@@ -1,0 +1,124 @@
+// Environment maps: the six axis directions land on the right texels of equirectangular and
+// mirror-ball maps (docs/units.md, conventions in scene/background.h), rotation and scale,
+// and the shared HDR files load and agree with each other.
+
+#include "glint/image/image_io.h"
+#include "glint/io/environment.h"
+#include "glint/scene/background.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace {
+
+using glint::Vec2;
+using glint::Vec3;
+
+void expect_uv(const Vec2& uv, float u, float v) {
+    EXPECT_NEAR(uv.x, u, 1e-5f);
+    EXPECT_NEAR(uv.y, v, 1e-5f);
+}
+
+TEST(EnvironmentLookup, EquirectangularAxes) {
+    expect_uv(glint::equirectangular_uv(Vec3(0, 0, -1)), 0.5f, 0.5f);   // centre column looks along -z
+    expect_uv(glint::equirectangular_uv(Vec3(1, 0, 0)), 0.75f, 0.5f);   // +x to its right
+    expect_uv(glint::equirectangular_uv(Vec3(-1, 0, 0)), 0.25f, 0.5f);
+    EXPECT_NEAR(std::fmod(glint::equirectangular_uv(Vec3(0, 0, 1)).x, 1.0f), 0.0f, 1e-5f);  // the seam
+    EXPECT_NEAR(glint::equirectangular_uv(Vec3(0, 1, 0)).y, 0.0f, 1e-5f);   // +y top row
+    EXPECT_NEAR(glint::equirectangular_uv(Vec3(0, -1, 0)).y, 1.0f, 1e-5f);  // -y bottom row
+}
+
+TEST(EnvironmentLookup, SphereMapAxes) {
+    expect_uv(glint::sphere_map_uv(Vec3(0, 0, 1)), 0.5f, 0.5f);  // centre shows +z (towards the viewer)
+    const float r = std::sqrt(0.5f);                             // 90° away: ball normal at 45°
+    expect_uv(glint::sphere_map_uv(Vec3(1, 0, 0)), 0.5f + 0.5f * r, 0.5f);
+    expect_uv(glint::sphere_map_uv(Vec3(-1, 0, 0)), 0.5f - 0.5f * r, 0.5f);
+    expect_uv(glint::sphere_map_uv(Vec3(0, 1, 0)), 0.5f, 0.5f - 0.5f * r);  // +y up in the image
+    expect_uv(glint::sphere_map_uv(Vec3(0, -1, 0)), 0.5f, 0.5f + 0.5f * r);
+    const Vec2 back = glint::sphere_map_uv(Vec3(0, 0, -1));                // -z is the rim
+    EXPECT_NEAR(std::hypot(back.x - 0.5f, back.y - 0.5f), 0.5f, 1e-5f);
+}
+
+/// An image whose every texel encodes its own coordinates: red = x, green = y.
+std::shared_ptr<const glint::Image> coordinate_image(int w, int h) {
+    glint::Image img(w, h, 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            img.at(x, y, 0) = float(x);
+            img.at(x, y, 1) = float(y);
+        }
+    return std::make_shared<const glint::Image>(std::move(img));
+}
+
+TEST(EnvironmentLookup, SixAxesLandOnTheRightEquirectTexels) {
+    const auto bg = glint::Background::environment(glint::BackgroundKind::Equirectangular, coordinate_image(64, 32));
+    auto texel = [&](const Vec3& d) { const glint::Color c = bg.evaluate(d); return std::pair{int(c.r), int(c.g)}; };
+    EXPECT_EQ(texel(Vec3(0, 0, -1)), std::pair(32, 16));
+    EXPECT_EQ(texel(Vec3(1, 0, 0)), std::pair(48, 16));
+    EXPECT_EQ(texel(Vec3(-1, 0, 0)), std::pair(16, 16));
+    EXPECT_TRUE(texel(Vec3(0, 0, 1)).first == 0 || texel(Vec3(0, 0, 1)).first == 63);
+    EXPECT_EQ(texel(Vec3(0, 1, 0)).second, 0);
+    EXPECT_EQ(texel(Vec3(0, -1, 0)).second, 31);
+}
+
+TEST(EnvironmentLookup, SixAxesLandOnTheRightSphereMapTexels) {
+    const auto bg = glint::Background::environment(glint::BackgroundKind::SphereMap, coordinate_image(64, 64));
+    auto texel = [&](const Vec3& d) { const glint::Color c = bg.evaluate(d); return std::pair{int(c.r), int(c.g)}; };
+    const int off = int(32.0f * std::sqrt(0.5f));  // 22
+    EXPECT_EQ(texel(Vec3(0, 0, 1)), std::pair(32, 32));
+    EXPECT_EQ(texel(Vec3(1, 0, 0)), std::pair(32 + off, 32));
+    EXPECT_EQ(texel(Vec3(-1, 0, 0)), std::pair(32 - off - 1, 32));
+    EXPECT_EQ(texel(Vec3(0, 1, 0)), std::pair(32, 32 - off - 1));
+    EXPECT_EQ(texel(Vec3(0, -1, 0)), std::pair(32, 32 + off));
+    EXPECT_EQ(texel(Vec3(0, 0, -1)), std::pair(63, 32));
+}
+
+TEST(EnvironmentLookup, RotationTurnsTheMapAboutYAndScaleMultiplies) {
+    // Turned by +90° (counter-clockwise from above), what was at -z is now seen towards -x.
+    const auto img = coordinate_image(64, 32);
+    const auto turned = glint::Background::environment(glint::BackgroundKind::Equirectangular, img, 90.0f, 2.0f);
+    const auto plain = glint::Background::environment(glint::BackgroundKind::Equirectangular, img);
+    EXPECT_EQ(turned.evaluate(Vec3(-1, 0, 0)).r, 2.0f * plain.evaluate(Vec3(0, 0, -1)).r);
+}
+
+TEST(EnvironmentKind, ParsesNames) {
+    EXPECT_EQ(glint::parse_environment_kind("equirect"), glint::BackgroundKind::Equirectangular);
+    EXPECT_EQ(glint::parse_environment_kind("spheremap"), glint::BackgroundKind::SphereMap);
+    EXPECT_FALSE(glint::parse_environment_kind("cubemap"));
+}
+
+const std::filesystem::path kEnvDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "env";
+
+TEST(EnvironmentFiles, LoadGuessLayoutAndAgree) {
+    const auto equirect = kEnvDir / "equirect/venice_sunset_1k.hdr";
+    const auto ball = kEnvDir / "probe/venice_sunset_mirrorball_512.hdr";
+    if (!std::filesystem::exists(equirect) || !std::filesystem::exists(ball)) GTEST_SKIP() << "no shared env maps";
+    const glint::Background a = glint::load_environment(equirect);
+    const glint::Background b = glint::load_environment(ball);
+    EXPECT_EQ(a.kind(), glint::BackgroundKind::Equirectangular);
+    EXPECT_EQ(b.kind(), glint::BackgroundKind::SphereMap);
+    // The probe was re-projected from the lat-long map with the same conventions: away from
+    // the ball's rim and from the busy horizon, both must show the same sky (nearest texels
+    // of two resolutions differ by a few percent).
+    for (Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0.3f, -0.6f, 0.74f), Vec3(-0.5f, 0.3f, 0.8f),
+                   Vec3(0.5f, 0.2f, 0.8f), Vec3(0.2f, 0.1f, -0.5f)}) {
+        d = normalize(d);
+        const glint::Color ca = a.evaluate(d), cb = b.evaluate(d);
+        ASSERT_TRUE(ca.is_finite() && cb.is_finite());
+        EXPECT_NEAR(cb.luminance() / ca.luminance(), 1.0f, 0.15f) << "direction " << d;
+    }
+    const glint::Color mean = glint::average_radiance(a);
+    EXPECT_TRUE(mean.is_finite());
+    EXPECT_GT(mean.luminance(), 0.0f);
+}
+
+TEST(EnvironmentFiles, MissingFileAndBadIntensityAreErrors) {
+    EXPECT_THROW((void)glint::load_environment(kEnvDir / "no_such_map.hdr"), glint::ImageError);
+    glint::EnvironmentOptions bad;
+    bad.intensity = -1.0f;
+    EXPECT_THROW((void)glint::load_environment(kEnvDir / "equirect/venice_sunset_1k.hdr", bad), std::invalid_argument);
+}
+
+}  // namespace

@@ -1,0 +1,125 @@
+// glTF material conversion (docs/assets.md): metallic → Fresnel mirror tinted by the base
+// colour, transmission + IOR → dielectric, emission, alpha modes, double-sided, roughness.
+
+#include "gltf_test_files.h"
+
+#include "glint/geometry/triangle_mesh.h"
+#include "glint/io/gltf_scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+namespace {
+
+using nlohmann::json;
+
+/// Load the quad with `material` as its only material.
+glint::GltfScene quad_with_material(const json& material, const json& extensions_used = json::array()) {
+    json j = glint_test::quad_json("quad.bin");
+    j["materials"][0] = material;
+    if (!extensions_used.empty()) j["extensionsUsed"] = extensions_used;
+    return glint::load_gltf_scene(glint_test::write_gltf(glint_test::temp_dir(), "quad", j));
+}
+
+TEST(GltfMaterials, SmoothMetalIsAMirrorTintedByTheBaseColour) {
+    const auto s = quad_with_material(
+        {{"name", "gold"},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 0.8, 0.3, 1.0}}, {"metallicFactor", 1}, {"roughnessFactor", 0}}}});
+    const glint::Material& m = s.loaded.scene.materials()[0];
+    EXPECT_EQ(m.name, "gold");
+    EXPECT_TRUE(m.fresnel_mirror);
+    EXPECT_EQ(m.reflectivity, glint::Color(1.0f, 0.8f, 0.3f)) << "F0 = base colour";
+    EXPECT_EQ(m.diffuse, glint::Color(0.0f)) << "metals have no diffuse part";
+    EXPECT_EQ(m.roughness, 0.0f);
+    EXPECT_EQ(m.transparency, 0.0f);
+}
+
+TEST(GltfMaterials, DielectricHasFourPercentFresnelAndDiffuseBase) {
+    const auto s = quad_with_material(
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}}, {"metallicFactor", 0}, {"roughnessFactor", 0}}}});
+    const glint::Material& m = s.loaded.scene.materials()[0];
+    EXPECT_NEAR(m.reflectivity.g, 0.04f, 1e-6f);
+    EXPECT_EQ(m.diffuse, glint::Color(0.2f, 0.4f, 0.6f));
+    EXPECT_EQ(m.ambient, m.diffuse);
+}
+
+TEST(GltfMaterials, RoughnessIsRecordedAndMovesMetalReflectionIntoDiffuse) {
+    const auto s = quad_with_material(
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0.25}}}});
+    const glint::Material& m = s.loaded.scene.materials()[0];
+    EXPECT_FLOAT_EQ(m.roughness, 0.25f);
+    EXPECT_NEAR(m.reflectivity.r, 0.75f, 1e-6f);
+    EXPECT_NEAR(m.diffuse.r, 0.25f, 1e-6f);
+}
+
+TEST(GltfMaterials, TransmissionAndIorMakeADielectric) {
+    const auto s = quad_with_material({{"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 0}}},
+                                       {"extensions",
+                                        {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                         {"KHR_materials_ior", {{"ior", 1.33}}}}}},
+                                      {"KHR_materials_transmission", "KHR_materials_ior"});
+    const glint::Material& m = s.loaded.scene.materials()[0];
+    EXPECT_TRUE(m.is_dielectric());
+    EXPECT_FLOAT_EQ(m.transparency, 1.0f);
+    EXPECT_FLOAT_EQ(m.ior, 1.33f);
+    EXPECT_TRUE(s.report.ignored.empty()) << s.report.ignored.front();
+}
+
+TEST(GltfMaterials, EmissionIsFactorTimesStrength) {
+    const auto s = quad_with_material({{"emissiveFactor", {1.0, 0.5, 0.0}},
+                                       {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}});
+    EXPECT_EQ(s.loaded.scene.materials()[0].emission, glint::Color(4.0f, 2.0f, 0.0f));
+}
+
+TEST(GltfMaterials, DefaultMaterialIsWhiteDiffuse) {
+    json j = glint_test::quad_json("quad.bin");
+    j.erase("materials");
+    j["meshes"][0]["primitives"][0].erase("material");
+    const auto s = glint::load_gltf_scene(glint_test::write_gltf(glint_test::temp_dir(), "quad", j));
+    EXPECT_TRUE(s.report.default_material);
+    EXPECT_EQ(s.report.materials, 0u);
+    const glint::Material& m = s.loaded.scene.material(s.loaded.scene.objects()[0].material);
+    EXPECT_EQ(m.diffuse, glint::Color(1.0f));
+    EXPECT_EQ(m.reflectivity, glint::Color(0.0f)) << "metallic 1 with roughness 1: matte, not a black mirror";
+}
+
+TEST(GltfMaterials, AlphaMaskCutsTheMeshAndBlendCastsNoShadow) {
+    const auto dir = glint_test::temp_dir();
+    // A 1×1 RGBA PNG with alpha 0, as a data URI: the cut-out removes the whole quad.
+    {
+        auto out = OIIO::ImageOutput::create((dir / "clear.png").string());
+        OIIO::ImageSpec spec(1, 1, 4, OIIO::TypeDesc::UINT8);
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+        const unsigned char texel[4] = {255, 255, 255, 0};
+        ASSERT_TRUE(out && out->open((dir / "clear.png").string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, texel));
+        out->close();
+    }
+    const std::string transparent_png = "clear.png";
+    json j = glint_test::quad_json("quad.bin");
+    // Texture coordinates: any 4 VEC2s will do (the texture is uniform); reuse the positions' bytes.
+    j["accessors"].push_back({{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+    j["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2;
+    j["images"] = json::array({{{"uri", transparent_png}}});
+    j["textures"] = json::array({{{"source", 0}}});
+    j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+    j["materials"][0]["alphaMode"] = "MASK";
+    j["materials"][0]["alphaCutoff"] = 0.3;
+    j["materials"][0]["doubleSided"] = true;
+    auto s = glint::load_gltf_scene(glint_test::write_gltf(dir, "quad", j));
+    const auto& mesh = dynamic_cast<const glint::TriangleMesh&>(*s.loaded.scene.objects()[0].shape);
+    ASSERT_NE(mesh.alpha_mask(), nullptr);
+    EXPECT_FLOAT_EQ(s.loaded.scene.materials()[0].alpha_cutoff, 0.3f);
+    glint::Scene& scene = s.loaded.scene;
+    scene.prepare();
+    glint::Ray down(glint::Vec3(0.5f, 1.0f, 0.5f), glint::Vec3(0.0f, -1.0f, 0.0f));
+    glint::Hit hit;
+    EXPECT_FALSE(scene.intersect(down, hit)) << "alpha 0 < cutoff: the quad is cut away";
+    EXPECT_FALSE(scene.occluded(glint::Ray(glint::Vec3(0.5f, 1.0f, 0.5f), glint::Vec3(0.0f, -1.0f, 0.0f))));
+
+    const auto blend = quad_with_material({{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}}}});
+    EXPECT_TRUE(blend.loaded.scene.materials()[0].is_dielectric()) << "see-through layer: no shadow";
+    EXPECT_FLOAT_EQ(blend.loaded.scene.materials()[0].ior, 1.0f);
+}
+
+}  // namespace

@@ -1,0 +1,38 @@
+// Every Stanford mesh in shared/data renders as a scene of its own (framing camera, default
+// lighting): a finite, non-blank image.
+
+#include "glint/image/film.h"
+#include "glint/integrators/whitted_integrator.h"
+#include "glint/io/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace {
+
+TEST(MeshScenes, StanfordMeshesRenderFinite) {
+    const std::filesystem::path dir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
+    if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes at " << dir;
+    for (const char* name : {"stanford_bunny.ply", "stanford_lucy_100k.ply", "stanford_dragon_res2.ply", "stanford_dragon.ply"}) {
+        glint::LoadedScene loaded = glint::load_scene_file(dir / name);
+        loaded.scene.prepare();
+        glint::RenderSettings settings;
+        settings.width = 24;
+        settings.height = 18;
+        glint::Film film(settings.width, settings.height);
+        glint::WhittedIntegrator(2).render(loaded.scene, settings, film, {});
+        float lo = 1e30f, hi = -1e30f;
+        bool finite = true;
+        for (uint32_t y = 0; y < film.height(); ++y)
+            for (uint32_t x = 0; x < film.width(); ++x) {
+                finite = finite && film.at(x, y).is_finite();
+                lo = std::min(lo, film.at(x, y).luminance());
+                hi = std::max(hi, film.at(x, y).luminance());
+            }
+        EXPECT_TRUE(finite) << name;
+        EXPECT_GT(hi - lo, 0.05f) << name << ": the mesh is not visible against the sky";
+    }
+}
+
+}  // namespace
