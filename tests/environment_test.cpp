@@ -52,27 +52,38 @@ std::shared_ptr<const glint::Image> coordinate_image(int w, int h) {
     return std::make_shared<const glint::Image>(std::move(img));
 }
 
+/// Where a lookup lands, in continuous texel coordinates: the coordinate image is looked up
+/// bilinearly, so the colour is the lookup position (texel centres at integer values).
+void expect_lookup(const glint::Background& bg, const Vec3& d, float x, float y) {
+    const glint::Color c = bg.evaluate(d);
+    EXPECT_NEAR(c.r, x, 1e-3f) << "direction " << d;
+    EXPECT_NEAR(c.g, y, 1e-3f) << "direction " << d;
+}
+
 TEST(EnvironmentLookup, SixAxesLandOnTheRightEquirectTexels) {
+    // 64×32 map: u = 0.5 + atan2(x, -z)/2π, v = acos(y)/π; position = uv·size - 0.5.
     const auto bg = glint::Background::environment(glint::BackgroundKind::Equirectangular, coordinate_image(64, 32));
-    auto texel = [&](const Vec3& d) { const glint::Color c = bg.evaluate(d); return std::pair{int(c.r), int(c.g)}; };
-    EXPECT_EQ(texel(Vec3(0, 0, -1)), std::pair(32, 16));
-    EXPECT_EQ(texel(Vec3(1, 0, 0)), std::pair(48, 16));
-    EXPECT_EQ(texel(Vec3(-1, 0, 0)), std::pair(16, 16));
-    EXPECT_TRUE(texel(Vec3(0, 0, 1)).first == 0 || texel(Vec3(0, 0, 1)).first == 63);
-    EXPECT_EQ(texel(Vec3(0, 1, 0)).second, 0);
-    EXPECT_EQ(texel(Vec3(0, -1, 0)).second, 31);
+    expect_lookup(bg, Vec3(0, 0, -1), 31.5f, 15.5f);  // centre column looks along -z
+    expect_lookup(bg, Vec3(1, 0, 0), 47.5f, 15.5f);   // +x a quarter turn to the right
+    expect_lookup(bg, Vec3(-1, 0, 0), 15.5f, 15.5f);
+    // +z is the seam: longitude wraps, blending the last and first columns (63 and 0).
+    expect_lookup(bg, Vec3(0, 0, 1), 31.5f, 15.5f);
+    EXPECT_NEAR(bg.evaluate(Vec3(0, 1, 0)).g, 0.0f, 1e-3f);    // +y: top row (clamped)
+    EXPECT_NEAR(bg.evaluate(Vec3(0, -1, 0)).g, 31.0f, 1e-3f);  // -y: bottom row (clamped)
 }
 
 TEST(EnvironmentLookup, SixAxesLandOnTheRightSphereMapTexels) {
+    // 64×64 mirror ball seen from +z: direction d shows at the ball normal normalize(d + z),
+    // so the axes ±x, ±y land at √½ of the radius from the centre, -z on the rim.
     const auto bg = glint::Background::environment(glint::BackgroundKind::SphereMap, coordinate_image(64, 64));
-    auto texel = [&](const Vec3& d) { const glint::Color c = bg.evaluate(d); return std::pair{int(c.r), int(c.g)}; };
-    const int off = int(32.0f * std::sqrt(0.5f));  // 22
-    EXPECT_EQ(texel(Vec3(0, 0, 1)), std::pair(32, 32));
-    EXPECT_EQ(texel(Vec3(1, 0, 0)), std::pair(32 + off, 32));
-    EXPECT_EQ(texel(Vec3(-1, 0, 0)), std::pair(32 - off - 1, 32));
-    EXPECT_EQ(texel(Vec3(0, 1, 0)), std::pair(32, 32 - off - 1));
-    EXPECT_EQ(texel(Vec3(0, -1, 0)), std::pair(32, 32 + off));
-    EXPECT_EQ(texel(Vec3(0, 0, -1)), std::pair(63, 32));
+    const float r = std::sqrt(0.5f);
+    auto pos = [](float unit) { return 32.0f * (1.0f + unit) - 0.5f; };  // [-1,1] → texel coordinate
+    expect_lookup(bg, Vec3(0, 0, 1), pos(0), pos(0));
+    expect_lookup(bg, Vec3(1, 0, 0), pos(r), pos(0));
+    expect_lookup(bg, Vec3(-1, 0, 0), pos(-r), pos(0));
+    expect_lookup(bg, Vec3(0, 1, 0), pos(0), pos(-r));  // +y up: towards the top row
+    expect_lookup(bg, Vec3(0, -1, 0), pos(0), pos(r));
+    expect_lookup(bg, Vec3(0, 0, -1), 63.0f, pos(0));   // the rim (clamped at the border)
 }
 
 TEST(EnvironmentLookup, RotationTurnsTheMapAboutYAndScaleMultiplies) {

@@ -183,6 +183,23 @@ TEST(TriangleMesh, RejectsBadData) {
     EXPECT_THROW(TriangleMesh{MeshData{}}, std::invalid_argument);
 }
 
+TEST(TriangleMesh, SmoothNormalsAreAreaWeightedOverSharedVertices) {
+    // A roof: two triangles sharing the ridge (vertices 0 and 1), tilted ±45° about x,
+    // the second twice as large. Ridge normals lean towards the larger face; the eaves
+    // keep their own face's normal.
+    MeshData d;
+    d.positions = {{0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {0, -1, -2}};
+    d.indices = {0, 2, 1, 0, 1, 3};
+    compute_smooth_normals(d);
+    const Vec3 n_front = normalize(Vec3(0, 1, 1)), n_back = normalize(Vec3(0, 3, -3));
+    const Vec3 ridge = normalize(cross(d.positions[2] - d.positions[0], d.positions[1] - d.positions[0]) +
+                                 cross(d.positions[1] - d.positions[0], d.positions[3] - d.positions[0]));
+    EXPECT_NEAR(dot(d.normals[0], ridge), 1.0f, 1e-6f);
+    EXPECT_LT(ridge.z, 0.0f);  // the back face has twice the area
+    EXPECT_NEAR(dot(d.normals[2], n_front), 1.0f, 1e-6f);
+    EXPECT_NEAR(dot(d.normals[3], normalize(n_back)), 1.0f, 1e-6f);
+}
+
 // ---- Quad and box -----------------------------------------------------------------------
 
 TEST(Quad, HitInsideMissOutside) {

@@ -118,4 +118,19 @@ std::size_t TriangleMesh::memory_bytes() const {
            data_.vertex_materials.size() * sizeof(uint32_t) + bvh_.memory_bytes();
 }
 
+void compute_smooth_normals(MeshData& data) {
+    data.normals.assign(data.positions.size(), Vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < data.indices.size(); t += 3) {
+        const uint32_t a = data.indices[t], b = data.indices[t + 1], c = data.indices[t + 2];
+        const Vec3 n = cross(data.positions[b] - data.positions[a], data.positions[c] - data.positions[a]);
+        data.normals[a] += n;
+        data.normals[b] += n;
+        data.normals[c] += n;
+    }
+    for (Vec3& n : data.normals) {
+        const float len = length(n);
+        n = len > 0.0f ? n / len : Vec3(0.0f);
+    }
+}
+
 }  // namespace glint

@@ -44,7 +44,11 @@ constexpr std::array<const char*, 8> kOutputExtensions = {".exr", ".hdr", ".pfm"
 
 Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     if (!std::filesystem::exists(path)) throw ImageError(path.string() + ": no such image file");
-    auto input = OIIO::ImageInput::open(path.string());
+    // Straight (unassociated) alpha: colour textures with cut-outs must keep their colour
+    // at the edges, which OpenImageIO's default premultiplication would darken.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto input = OIIO::ImageInput::open(path.string(), &config);
     if (!input) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = input->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)

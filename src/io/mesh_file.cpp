@@ -43,7 +43,10 @@ std::string mesh_name(const aiMesh* mesh, unsigned index) {
 
 /// MeshData of one assimp mesh. Triangles that index past the vertices or touch a
 /// non-finite vertex are dropped and counted in `dropped`.
-MeshData convert_mesh(const aiMesh* mesh, std::size_t& dropped, std::size_t& non_triangles) {
+/// With `smooth_missing_normals`, a mesh without normals gets smooth ones (what users expect
+/// of a scanned PLY or an OBJ without `vn`); glTF asks for flat normals instead (spec §3.7.2.1).
+MeshData convert_mesh(const aiMesh* mesh, bool smooth_missing_normals, std::size_t& dropped,
+                      std::size_t& non_triangles) {
     MeshData data;
     const unsigned n = mesh->mNumVertices;
     data.positions.resize(n);
@@ -83,6 +86,7 @@ MeshData convert_mesh(const aiMesh* mesh, std::size_t& dropped, std::size_t& non
     if (!data.indices.empty())
         for (Vec3& p : data.positions)
             if (!is_finite(p)) p = data.positions[data.indices[0]];
+    if (!mesh->mNormals && smooth_missing_normals) compute_smooth_normals(data);
     return data;
 }
 
@@ -168,13 +172,14 @@ std::vector<std::string> animation_warnings(const std::filesystem::path& path, c
 namespace {
 
 /// Glint meshes, placements and (optionally) materials of an assimp scene read from `path`.
-MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, bool convert_materials) {
+MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, bool convert_materials,
+                       bool smooth_missing_normals) {
     MeshFile file;
     std::size_t dropped = 0, non_triangles = 0, empty = 0;
     for (unsigned i = 0; i < ai->mNumMeshes; ++i) {
         const aiMesh* mesh = ai->mMeshes[i];
         file.mesh_materials.push_back(mesh->mMaterialIndex);
-        MeshData data = convert_mesh(mesh, dropped, non_triangles);
+        MeshData data = convert_mesh(mesh, smooth_missing_normals, dropped, non_triangles);
         if (mesh->HasBones()) file.skinned_meshes.push_back(mesh_name(mesh, i));
         if (mesh->mNumAnimMeshes > 0) file.morphed_meshes.push_back(mesh_name(mesh, i));
         if (data.indices.empty()) {
@@ -225,7 +230,7 @@ MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_material
     const aiScene* ai = importer.ReadFile(path.string(), kImportFlags);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
         throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
-    return convert_scene(ai, path, convert_materials);
+    return convert_scene(ai, path, convert_materials, true);
 }
 
 MeshFile read_gltf_geometry(const gltf::Document& doc) {
@@ -235,7 +240,7 @@ MeshFile read_gltf_geometry(const gltf::Document& doc) {
     const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
         throw SceneError(doc.path.string() + ": cannot read the geometry: " + importer.GetErrorString());
-    MeshFile file = convert_scene(ai, doc.path, false);
+    MeshFile file = convert_scene(ai, doc.path, false, false);
     file.warnings.insert(file.warnings.begin(), warnings.begin(), warnings.end());
     // assimp numbers meshes primitive by primitive; the materials come from the JSON.
     std::vector<uint32_t> materials = gltf::primitive_materials(doc);

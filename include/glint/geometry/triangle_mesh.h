@@ -23,6 +23,12 @@ struct MeshData {
     std::vector<uint32_t> vertex_materials;
 };
 
+/// Fill `data.normals` with smooth vertex normals: at each vertex, the sum of the unnormalised
+/// normals (e1 × e2, so weighted by area) of the triangles that share it, normalised. Only
+/// triangles that share a vertex index are smoothed together: meshes whose faces have
+/// their own vertices (STL) stay faceted.
+void compute_smooth_normals(MeshData& data);
+
 /// A mesh is stored once and may be placed by several scene objects (instancing).
 /// Zero-area triangles are kept but never reported as hits.
 class TriangleMesh final : public Shape {
