@@ -2,6 +2,7 @@
 
 #include "glint/math/color.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -42,30 +43,25 @@ constexpr std::array<const char*, 8> kOutputExtensions = {".exr", ".hdr", ".pfm"
 
 }  // namespace
 
-Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
-    if (!std::filesystem::exists(path)) throw ImageError(path.string() + ": no such image file");
-    // Straight (unassociated) alpha: colour textures with cut-outs must keep their colour
-    // at the edges, which OpenImageIO's default premultiplication would darken.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto input = OIIO::ImageInput::open(path.string(), &config);
-    if (!input) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        throw ImageError(path.string() + ": image has no pixels");
-    Image image(spec.width, spec.height, spec.nchannels);
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-        throw ImageError(path.string() + ": cannot read image: " + input->geterror());
-    input->close();
+namespace {
 
-    // Integer files hold display-encoded colour unless they say otherwise; float files are linear.
+/// Pixels of an opened image as linear floats. Integer files hold display-encoded colour
+/// unless they say otherwise; float files are linear. Alpha is coverage, never sRGB-encoded.
+Image read_pixels(OIIO::ImageInput& input, const std::string& name, ColorEncoding encoding) {
+    const OIIO::ImageSpec& spec = input.spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw ImageError(name + ": image has no pixels");
+    Image image(spec.width, spec.height, spec.nchannels);
+    if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+        throw ImageError(name + ": cannot read image: " + input.geterror());
+    input.close();
+
     const bool integer_data = !(spec.format.basetype == OIIO::TypeDesc::FLOAT ||
                                 spec.format.basetype == OIIO::TypeDesc::HALF ||
                                 spec.format.basetype == OIIO::TypeDesc::DOUBLE);
     const std::string color_space = spec.get_string_attribute("oiio:ColorSpace");
     const bool linear_tagged = color_space == "Linear" || color_space == "linear";
     if (encoding == ColorEncoding::Color && integer_data && !linear_tagged) {
-        // Alpha is coverage, never sRGB-encoded: grey+alpha and RGBA files keep their last channel.
+        // Grey+alpha and RGBA files without an alpha tag keep their last channel as alpha.
         int alpha = spec.alpha_channel;
         if (alpha < 0 && (spec.nchannels == 2 || spec.nchannels == 4)) alpha = spec.nchannels - 1;
         const auto stride = std::size_t(spec.nchannels);
@@ -74,6 +70,38 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
                 if (c != alpha) image.pixels[i + c] = srgb_to_linear(image.pixels[i + c]);
     }
     return image;
+}
+
+/// Straight (unassociated) alpha: colour textures with cut-outs must keep their colour at
+/// the edges, which OpenImageIO's default premultiplication would darken.
+OIIO::ImageSpec straight_alpha_config() {
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return config;
+}
+
+}  // namespace
+
+Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
+    if (!std::filesystem::exists(path)) throw ImageError(path.string() + ": no such image file");
+    const OIIO::ImageSpec config = straight_alpha_config();
+    auto input = OIIO::ImageInput::open(path.string(), &config);
+    if (!input) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
+    return read_pixels(*input, path.string(), encoding);
+}
+
+Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, ColorEncoding encoding) {
+    if (bytes.empty()) throw ImageError(name + ": empty image data");
+    // OpenImageIO picks the reader from the name's extension and falls back to sniffing the
+    // bytes. In 2.4 a reader opened with a config spec takes the proxy from the spec's
+    // "oiio:ioproxy" attribute (a pointer to the pointer), not only from the argument.
+    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    OIIO::Filesystem::IOProxy* proxy = &reader;
+    OIIO::ImageSpec config = straight_alpha_config();
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto input = OIIO::ImageInput::open(name, &config, &reader);
+    if (!input) throw ImageError(name + ": cannot decode image: " + OIIO::geterror());
+    return read_pixels(*input, name, encoding);
 }
 
 bool is_supported_output(const std::filesystem::path& path) {

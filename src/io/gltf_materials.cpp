@@ -1,6 +1,6 @@
 #include "gltf_materials.h"
 
-#include "gltf_image.h"
+#include "glint/image/image_io.h"
 
 #include "glint/io/scene_file.h"
 

@@ -1,7 +1,7 @@
 #include "mesh_file.h"
 
 #include "gltf_geometry.h"
-#include "gltf_image.h"
+#include "glint/image/image_io.h"
 
 #include "glint/image/image_io.h"
 #include "glint/io/scene_file.h"
@@ -12,8 +12,6 @@
 #include <assimp/scene.h>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <functional>
 #include <set>
 
@@ -113,12 +111,7 @@ std::shared_ptr<const Image> material_image(const aiScene* ai, const aiMaterial*
             }
             return std::make_shared<const Image>(std::move(img));
         }
-        // Through decode_image rather than read_image: same sRGB rule, but straight alpha.
-        const std::filesystem::path file = path.parent_path() / name;
-        if (!std::filesystem::exists(file)) throw ImageError(file.string() + ": no such image file");
-        std::ifstream in(file, std::ios::binary);
-        const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-        return std::make_shared<const Image>(decode_image(bytes, file.string()));
+        return std::make_shared<const Image>(read_image(path.parent_path() / name));
     } catch (const std::exception& e) {
         warnings.push_back(path.string() + ": material '" + mat->GetName().C_Str() + "': texture ignored: " + e.what());
         return nullptr;

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace glint {
 
@@ -24,6 +26,12 @@ enum class ColorEncoding {
 
 /// Read any format OpenImageIO knows into linear floats. Throws ImageError naming the file.
 [[nodiscard]] Image read_image(const std::filesystem::path& path, ColorEncoding encoding = ColorEncoding::Color);
+
+/// Decode PNG/JPEG/... bytes held in memory (textures inside GLB or FBX files) with the same
+/// rules as read_image(). `name` tells the decoder which format to try first and names the
+/// image in errors. Throws ImageError.
+[[nodiscard]] Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name,
+                                 ColorEncoding encoding = ColorEncoding::Color);
 
 struct WriteOptions {
     /// Exposure in stops applied before display encoding (PNG, JPEG, TIFF 8-bit): value·2^exposure.
