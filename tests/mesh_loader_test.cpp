@@ -42,7 +42,9 @@ TEST(MeshLoader, StanfordMeshesKeepTheirCounts) {
     }
 }
 
-TEST(MeshLoader, DragonTwiceAsInstancesLoadsUnderTwoSeconds) {
+// The load time is printed for the record, not asserted: benchmarks are reported, never
+// timed assertions (a loaded CI machine must not fail a correct loader).
+TEST(MeshLoader, DragonTwiceAsInstancesSharesOneMesh) {
     const fs::path path = kMeshes / "stanford_dragon.ply";
     if (!fs::exists(path)) GTEST_SKIP() << "no shared mesh " << path;
     glint::Scene scene;
@@ -52,11 +54,6 @@ TEST(MeshLoader, DragonTwiceAsInstancesLoadsUnderTwoSeconds) {
     const auto second = glint::import_mesh_file(scene, path, glint::Transform::translate({0.3f, 0, 0}), std::nullopt, &cache);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "stanford_dragon.ply imported twice in " << seconds << " s\n";
-#if defined(__SANITIZE_ADDRESS__)
-    (void)seconds;  // sanitizers slow everything down several times: the budget is for Release
-#else
-    EXPECT_LT(seconds, 2.0);
-#endif
     EXPECT_FALSE(first.reused);
     EXPECT_TRUE(second.reused);
     EXPECT_EQ(cache.size(), 1u);
