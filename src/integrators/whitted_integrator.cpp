@@ -5,6 +5,7 @@
 #include "glint/scene/scene.h"
 
 #include <cmath>
+#include <optional>
 
 namespace glint {
 
@@ -45,15 +46,14 @@ Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, uint32_t dept
 
     const SurfaceInteraction si = scene.interaction(r, hit);
     const uint32_t material_index = si.materials[0];
-    Material blended;
-    const Material* mp = &scene.material(material_index);
+    // Only hits on meshes with per-vertex materials pay for a blended copy.
+    std::optional<Material> blended;
     if (si.blends_materials) {
         const auto& w = si.material_weights;
         blended = blend(scene.material(si.materials[0]), scene.material(si.materials[1]),
                         scene.material(si.materials[2]), w[0], w[1], w[2]);
-        mp = &blended;
     }
-    const Material& m = *mp;
+    const Material& m = blended ? *blended : scene.material(material_index);
 
     const Vec3 d = normalize(ray.direction);
     const Vec3 to_viewer = -d;
