@@ -6,7 +6,8 @@
 #include "scene_source.h"
 
 #include "glint/image/image_io.h"
-#include "glint/integrators/whitted_integrator.h"
+#include "glint/image/filter.h"
+#include "glint/integrators/integrator_registry.h"
 #include "glint/io/scene_file.h"
 
 #include <CLI/CLI.hpp>
@@ -29,7 +30,9 @@ struct RenderOptions {
     std::string output;
     std::optional<uint32_t> width, height, spp, depth, threads;
     std::optional<uint64_t> seed;
-    std::optional<std::string> filter;
+    std::optional<std::string> filter, integrator, mis;
+    std::optional<float> filter_radius;
+    std::optional<uint32_t> light_samples;
     float exposure = 0.0f;
     bool quiet = false;
 };
@@ -56,7 +59,16 @@ int run_render(const RenderOptions& opt) {
     if (opt.depth) s.max_depth = *opt.depth;
     if (opt.threads) s.threads = *opt.threads;
     if (opt.seed) s.seed = *opt.seed;
-    if (opt.filter) s.filter = *opt.filter == "tent" ? glint::PixelFilter::Tent : glint::PixelFilter::Box;
+    if (opt.filter) {
+        for (glint::PixelFilter f : {glint::PixelFilter::Box, glint::PixelFilter::Tent, glint::PixelFilter::Gaussian,
+                                     glint::PixelFilter::Mitchell})
+            if (glint::filter_name(f) == *opt.filter) s.filter = f;
+        s.filter_radius = 0.0f;  // a filter named here takes its own default radius
+    }
+    if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
+    if (opt.integrator) s.integrator = *opt.integrator;
+    if (opt.light_samples) s.light_samples = *opt.light_samples;
+    if (opt.mis) s.mis = *opt.mis == "balance" ? glint::MisHeuristic::Balance : glint::MisHeuristic::Power;
     if (s.width == 0 || s.height == 0) throw std::invalid_argument("image width and height must be at least 1");
 
     std::string output = opt.output;
@@ -72,10 +84,11 @@ int run_render(const RenderOptions& opt) {
     const double build_seconds = seconds_since(build_start);
 
     glint::Film film(s.width, s.height);
-    glint::WhittedIntegrator integrator(s.max_depth);
+    const std::unique_ptr<glint::Integrator> integrator = glint::make_integrator(s);
+    for (const std::string& w : integrator->warnings(loaded.scene)) fmt::print(stderr, "warning: {}\n", w);
     glint::app::ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
     const glint::RenderStats stats =
-        integrator.render(loaded.scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
+        integrator->render(loaded.scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
     bar.finish();
 
     glint::WriteOptions write_options;
@@ -109,7 +122,18 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--depth", render.depth, "Maximum reflection/refraction depth");
     render_cmd->add_option("--threads", render.threads, "Worker threads (0 = all cores)");
     render_cmd->add_option("--seed", render.seed, "Random seed");
-    render_cmd->add_option("--filter", render.filter, "Pixel filter")->check(CLI::IsMember({"box", "tent"}));
+    render_cmd->add_option("--filter", render.filter, "Pixel filter")
+        ->check(CLI::IsMember({"box", "tent", "gaussian", "mitchell"}));
+    render_cmd->add_option("--filter-radius", render.filter_radius, "Pixel filter radius in pixels (default: the filter's)")
+        ->check(CLI::Range(0.001f, 16.0f));
+    std::vector<std::string> integrator_names;
+    for (std::string_view name : glint::integrator_names()) integrator_names.emplace_back(name);
+    render_cmd->add_option("--integrator", render.integrator, "Integrator (default: the scene's, else whitted)")
+        ->check(CLI::IsMember(integrator_names));
+    render_cmd->add_option("--light-samples", render.light_samples, "Whitted: samples per area light per shading point")
+        ->check(CLI::Range(1, 1024));
+    render_cmd->add_option("--mis", render.mis, "Path: multiple importance sampling heuristic")
+        ->check(CLI::IsMember({"balance", "power"}));
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG/JPEG/TIFF output");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress bar");
     glint::app::add_scene_options(render_cmd, render.scene);

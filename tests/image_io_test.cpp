@@ -99,7 +99,7 @@ TEST_F(ImageIoTest, ReadErrorsNameTheFile) {
 
 TEST(Film, ToImageKeepsLinearValuesRowMajorFromTheTop) {
     Film film(3, 2);
-    film.set(2, 1, Color(1, 2, 3));
+    film.add_sample(2, 1, Color(1, 2, 3), 1.0f);
     const Image img = film.to_image();
     EXPECT_EQ(img.channels, 3);
     EXPECT_FLOAT_EQ(img.at(2, 1, 0), 1.0f);

@@ -20,8 +20,9 @@ namespace {
 
 /// Radiance along one ray with the Whitted integrator.
 Color radiance(const Scene& scene, const Ray& ray, uint32_t max_depth = 5) {
-    Rng rng(0, 0);
-    TraceContext context{rng};
+    Sampler sampler(0, 1);
+    sampler.start_pixel_sample(0, 0);
+    TraceContext context{sampler};
     return WhittedIntegrator(max_depth).Li(scene, ray, context);
 }
 
@@ -179,8 +180,9 @@ TEST(WhittedRadiance, TotalInternalReflectionKeepsLightInside) {
     // Start inside the glass, 60° from the top face's normal (critical angle 41.8°).
     const Vec3 d = normalize(Vec3(std::sin(radians(60.0f)), std::cos(radians(60.0f)), 0));
     IorStack inside = IorStack(1.0f).entered(0, 1.5f);
-    Rng rng(0, 0);
-    TraceContext ctx{rng};
+    Sampler sampler(0, 1);
+    sampler.start_pixel_sample(0, 0);
+    TraceContext ctx{sampler};
     const WhittedIntegrator integrator(1);
     // With depth 1 the TIR reflection is traced but cut: black, never the background.
     scene.background = Background::constant(Color(1.0f));
@@ -210,11 +212,11 @@ TEST(WhittedRadiance, PerVertexMaterialsBlendWithBarycentrics) {
 
 TEST(WhittedRadiance, SpotLightConeCutsOff) {
     const SpotLight spot({0, 10, 0}, {0, -1, 0}, Color(1.0f), radians(10.0f), radians(20.0f), Falloff::None);
-    EXPECT_FLOAT_EQ(spot.sample({0, 0, 0}).irradiance.r, 1.0f);  // on the axis
+    EXPECT_FLOAT_EQ(spot.sample({0, 0, 0}, {}).radiance.r / kPi, 1.0f);  // on the axis
     const float inside = 10.0f * std::tan(radians(5.0f)), outside = 10.0f * std::tan(radians(25.0f));
-    EXPECT_FLOAT_EQ(spot.sample({inside, 0, 0}).irradiance.r, 1.0f);
-    EXPECT_FLOAT_EQ(spot.sample({outside, 0, 0}).irradiance.r, 0.0f);
-    const float between = spot.sample({10.0f * std::tan(radians(15.0f)), 0, 0}).irradiance.r;
+    EXPECT_FLOAT_EQ(spot.sample({inside, 0, 0}, {}).radiance.r / kPi, 1.0f);
+    EXPECT_FLOAT_EQ(spot.sample({outside, 0, 0}, {}).radiance.r, 0.0f);
+    const float between = spot.sample({10.0f * std::tan(radians(15.0f)), 0, 0}, {}).radiance.r / kPi;
     EXPECT_GT(between, 0.0f);
     EXPECT_LT(between, 1.0f);
 }

@@ -39,24 +39,24 @@ TEST(LightUnits, PointLightOfICandelaAtDistanceDGivesIOverPiDSquared) {
     const auto& light = dynamic_cast<const glint::PointLight&>(*s.loaded.scene.lights()[0]);
     EXPECT_EQ(light.falloff(), glint::Falloff::InverseSquare);
     EXPECT_NEAR(light.intensity().r, intensity / glint::kPi, 1e-4f);
-    const glint::LightSample ls = light.sample(glint::Vec3(0.0f));
-    EXPECT_NEAR(ls.irradiance.g, intensity / (glint::kPi * d * d), 1e-5f);
+    const glint::LightSample ls = light.sample(glint::Vec3(0.0f), {});
+    EXPECT_NEAR(ls.radiance.g / glint::kPi, intensity / (glint::kPi * d * d), 1e-5f);
     EXPECT_NEAR(ls.distance, d, 1e-6f);
     EXPECT_NEAR(ls.direction.y, 1.0f, 1e-6f);
 }
 
 TEST(LightUnits, ColouredPointLightScalesEachChannel) {
     glint::GltfScene s = quad_with_light({{"type", "point"}, {"intensity", 10.0f}, {"color", {1.0, 0.5, 0.25}}}, {0, 1, 0});
-    const glint::LightSample ls = s.loaded.scene.lights()[0]->sample(glint::Vec3(0.0f));
-    EXPECT_NEAR(ls.irradiance.r, 10.0f / glint::kPi, 1e-5f);
-    EXPECT_NEAR(ls.irradiance.g, 5.0f / glint::kPi, 1e-5f);
-    EXPECT_NEAR(ls.irradiance.b, 2.5f / glint::kPi, 1e-5f);
+    const glint::LightSample ls = s.loaded.scene.lights()[0]->sample(glint::Vec3(0.0f), {});
+    EXPECT_NEAR(ls.radiance.r / glint::kPi, 10.0f / glint::kPi, 1e-5f);
+    EXPECT_NEAR(ls.radiance.g / glint::kPi, 5.0f / glint::kPi, 1e-5f);
+    EXPECT_NEAR(ls.radiance.b / glint::kPi, 2.5f / glint::kPi, 1e-5f);
 }
 
 TEST(LightUnits, DirectionalLightOfELuxGivesEOverPi) {
     glint::GltfScene s = quad_with_light({{"type", "directional"}, {"intensity", 3.0f}}, {0, 5, 0}, kDown);
-    const glint::LightSample ls = s.loaded.scene.lights()[0]->sample(glint::Vec3(7.0f, 0.0f, -3.0f));
-    EXPECT_NEAR(ls.irradiance.r, 3.0f / glint::kPi, 1e-5f);
+    const glint::LightSample ls = s.loaded.scene.lights()[0]->sample(glint::Vec3(7.0f, 0.0f, -3.0f), {});
+    EXPECT_NEAR(ls.radiance.r / glint::kPi, 3.0f / glint::kPi, 1e-5f);
     EXPECT_NEAR(ls.direction.y, 1.0f, 1e-5f) << "the light travels along the node's -z (down here)";
     EXPECT_TRUE(std::isinf(ls.distance));
 }
@@ -67,8 +67,8 @@ TEST(LightUnits, SpotLightOnAxisIsAPointLightAndDarkOutsideItsCone) {
         {{"type", "spot"}, {"intensity", intensity}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.4}}}},
         {0, d, 0}, kDown);
     const auto& light = *s.loaded.scene.lights()[0];
-    EXPECT_NEAR(light.sample(glint::Vec3(0.0f)).irradiance.r, intensity / (glint::kPi * d * d), 1e-5f);
-    EXPECT_EQ(light.sample(glint::Vec3(5.0f, 0.0f, 0.0f)).irradiance.r, 0.0f);  // 68° off axis
+    EXPECT_NEAR(light.sample(glint::Vec3(0.0f), {}).radiance.r / glint::kPi, intensity / (glint::kPi * d * d), 1e-5f);
+    EXPECT_EQ(light.sample(glint::Vec3(5.0f, 0.0f, 0.0f), {}).radiance.r, 0.0f);  // 68° off axis
 }
 
 TEST(LightUnits, RenderedWhiteLambertianShowsTheDocumentedRadiance) {

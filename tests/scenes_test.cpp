@@ -14,7 +14,7 @@
 // (tests/references/README.md).
 
 #include "glint/image/image_io.h"
-#include "glint/integrators/whitted_integrator.h"
+#include "glint/integrators/integrator_registry.h"
 #include "glint/io/toml_scene_loader.h"
 #include "glint/scene/default_scene.h"
 
@@ -88,7 +88,7 @@ Image render(LoadedScene& loaded) {
     loaded.settings.height = kHeight;
     loaded.scene.prepare();
     Film film(kWidth, kHeight);
-    WhittedIntegrator(loaded.settings.max_depth).render(loaded.scene, loaded.settings, film);
+    make_integrator(loaded.settings)->render(loaded.scene, loaded.settings, film);
     return film.to_image();
 }
 

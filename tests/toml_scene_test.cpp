@@ -61,7 +61,7 @@ TEST(TomlSceneErrors, UnknownSection) {
 
 TEST(TomlSceneErrors, UnknownKeyWithoutCloseMatchListsTheKeys) {
     expect_error("[render]\nwidth = 64\ncolour_space = \"srgb\"\n", "test.toml:3:1:",
-                 {"unknown key 'colour_space'", "expected one of: filter, height, max_depth, seed, spp, width"});
+                 {"unknown key 'colour_space'", "expected one of: filter, filter_radius, height, integrator, light_samples, max_depth, mis, seed, spp, width"});
 }
 
 TEST(TomlSceneErrors, UnknownKeyInsideTransform) {
@@ -403,10 +403,10 @@ outer_angle = 20
     ASSERT_NE(sun, nullptr);
     EXPECT_EQ(sun->direction(), Vec3(0, -1, 0));
     EXPECT_EQ(sun->irradiance(), Color(0.5f));
-    const LightSample inside = s.scene.lights()[2]->sample(Vec3(0, 0, 0));
-    const LightSample outside = s.scene.lights()[2]->sample(Vec3(5, 0, 0));  // 45° off the axis
-    EXPECT_EQ(inside.irradiance, Color(1.0f));
-    EXPECT_TRUE(outside.irradiance.is_black());
+    const LightSample inside = s.scene.lights()[2]->sample(Vec3(0, 0, 0), {});
+    const LightSample outside = s.scene.lights()[2]->sample(Vec3(5, 0, 0), {});  // 45° off the axis
+    EXPECT_EQ(inside.radiance, Color(kPi));  // physical: π × the π-scaled intensity
+    EXPECT_TRUE(outside.radiance.is_black());
 }
 
 constexpr std::string_view kGeometry = R"(

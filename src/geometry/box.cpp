@@ -1,5 +1,6 @@
 #include "glint/geometry/box.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace glint {
@@ -70,6 +71,31 @@ void Box::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) co
     const Vec3 d = box_.diagonal();
     si.uv = Vec2((p[a1] - box_.lo[a1]) / d[a1], (p[a2] - box_.lo[a2]) / d[a2]);
     si.front_face = dot(ray.direction, n) < 0.0f;
+}
+
+float Box::area() const {
+    const Vec3 e = box_.hi - box_.lo;
+    return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+}
+
+std::optional<ShapeSample> Box::sample_area(Vec2 u) const {
+    // Pick an axis pair of faces by their area, then one of the two faces, then a point.
+    const Vec3 e = box_.hi - box_.lo;
+    const float face_area[3] = {e.y * e.z, e.z * e.x, e.x * e.y};
+    const float total = face_area[0] + face_area[1] + face_area[2];
+    float x = u.x * total;
+    int axis = 0;
+    while (axis < 2 && x >= face_area[axis]) x -= face_area[axis++];
+    x = std::clamp(x / face_area[axis], 0.0f, 1.0f);
+    const bool upper = x >= 0.5f;
+    const float s = upper ? 2.0f * x - 1.0f : 2.0f * x;
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    Vec3 p, n(0.0f);
+    p[axis] = upper ? box_.hi[axis] : box_.lo[axis];
+    p[a1] = box_.lo[a1] + s * e[a1];
+    p[a2] = box_.lo[a2] + u.y * e[a2];
+    n[axis] = upper ? 1.0f : -1.0f;
+    return ShapeSample{p, n, Vec2(s, u.y), 1.0f / area()};
 }
 
 }  // namespace glint

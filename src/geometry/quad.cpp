@@ -11,6 +11,12 @@ Quad::Quad(const Vec3& corner, const Vec3& edge_u, const Vec3& edge_v)
     if (!(length(n) > 0.0f) || !is_finite(n) || !is_finite(corner))
         throw std::invalid_argument("quad edges must be finite, non-zero and not parallel");
     normal_ = normalize(n);
+    area_ = length(n);
+}
+
+std::optional<ShapeSample> Quad::sample_area(Vec2 u) const {
+    // A parallelogram is the affine image of the unit square: uniform in (a, b) is uniform in area.
+    return ShapeSample{corner_ + edge_u_ * u.x + edge_v_ * u.y, normal_, u, 1.0f / area_};
 }
 
 Bounds3 Quad::bounds() const {

@@ -1,6 +1,8 @@
 #include "glint/geometry/sphere.h"
 
 #include "glint/math/constants.h"
+#include "glint/math/frame.h"
+#include "glint/sampling/warp.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -65,10 +67,72 @@ void Sphere::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si)
     si.p = center_ + n * radius_;
     si.geometric_normal = n;
     si.shading_normal = n;
+    si.uv = uv_of(n);
+    si.front_face = dot(ray.direction, n) < 0.0f;
+}
+
+Vec2 Sphere::uv_of(const Vec3& n) {
     float phi = std::atan2(n.z, n.x);
     if (phi < 0.0f) phi += 2.0f * kPi;
-    si.uv = Vec2(phi / (2.0f * kPi), std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi);
-    si.front_face = dot(ray.direction, n) < 0.0f;
+    return Vec2(phi / (2.0f * kPi), std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi);
+}
+
+float Sphere::area() const { return 4.0f * kPi * radius_ * radius_; }
+
+std::optional<ShapeSample> Sphere::sample_area(Vec2 u) const {
+    const Vec3 n = sample_uniform_sphere(u);
+    return ShapeSample{center_ + n * radius_, n, uv_of(n), 1.0f / area()};
+}
+
+namespace {
+
+/// sin²θmax of the cone a sphere of radius r subtends at distance d ≥ r from its centre.
+float sin2_theta_max(float radius, float dist2) { return radius * radius / dist2; }
+
+/// Below sin²(1.5°) the cone is too thin for 1 − cos θ in single precision: use the
+/// Taylor expansion instead (pbrt-v4 §6.2.4).
+constexpr float kThinCone = 0.00068523f;
+
+}  // namespace
+
+std::optional<ShapeSample> Sphere::sample_toward(const Vec3& ref, Vec2 u) const {
+    const Vec3 to_center = center_ - ref;
+    const float dist2 = dot(to_center, to_center);
+    if (dist2 <= radius_ * radius_ * 1.0001f) return Shape::sample_toward(ref, u);
+    // Uniform direction in the cone, then the point where it meets the sphere, found from
+    // the angle α at the centre (pbrt-v4 §6.2.4) rather than by a ray test that could miss
+    // at the cone's rim.
+    const float sin2_max = sin2_theta_max(radius_, dist2);
+    const float sin_max = std::sqrt(sin2_max);
+    float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2_max));
+    float one_minus_cos_max = 1.0f - cos_max;
+    float cos_theta = (cos_max - 1.0f) * u.x + 1.0f;
+    float sin2_theta = 1.0f - cos_theta * cos_theta;
+    if (sin2_max < kThinCone) {
+        sin2_theta = sin2_max * u.x;
+        cos_theta = std::sqrt(1.0f - sin2_theta);
+        one_minus_cos_max = sin2_max / 2.0f;
+    }
+    const float cos_alpha =
+        sin2_theta / sin_max + cos_theta * std::sqrt(std::max(0.0f, 1.0f - sin2_theta / (sin_max * sin_max)));
+    const float sin_alpha = std::sqrt(std::max(0.0f, 1.0f - cos_alpha * cos_alpha));
+    const float phi = 2.0f * kPi * u.y;
+    Vec3 b1, b2;
+    const Vec3 axis = normalize(to_center);
+    orthonormal_basis(axis, b1, b2);
+    // The surface normal points back towards the receiver, at angle α from −axis.
+    const Vec3 n = -(b1 * (sin_alpha * std::cos(phi)) + b2 * (sin_alpha * std::sin(phi)) + axis * cos_alpha);
+    return ShapeSample{center_ + n * radius_, n, uv_of(n), 1.0f / (2.0f * kPi * one_minus_cos_max)};
+}
+
+float Sphere::pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const {
+    const Vec3 to_center = center_ - ref;
+    const float dist2 = dot(to_center, to_center);
+    if (dist2 <= radius_ * radius_ * 1.0001f) return Shape::pdf_toward(ref, p, n);
+    const float sin2_max = sin2_theta_max(radius_, dist2);
+    const float one_minus_cos_max =
+        sin2_max < kThinCone ? sin2_max / 2.0f : 1.0f - std::sqrt(std::max(0.0f, 1.0f - sin2_max));
+    return 1.0f / (2.0f * kPi * one_minus_cos_max);
 }
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 #include "glint/geometry/triangle_mesh.h"
 
 #include "glint/geometry/triangle.h"
+#include "glint/sampling/warp.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -110,6 +111,40 @@ void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteractio
         si.materials = {data_.vertex_materials[idx[0]], data_.vertex_materials[idx[1]], data_.vertex_materials[idx[2]]};
         si.material_weights = {b0, b1, b2};
     }
+}
+
+void TriangleMesh::prepare_sampling() {
+    if (triangle_areas_) return;
+    std::vector<float> areas(triangle_count());
+    float total = 0.0f;
+    for (std::size_t t = 0; t < areas.size(); ++t) {
+        const uint32_t* idx = &data_.indices[3 * t];
+        const Vec3& p0 = data_.positions[idx[0]];
+        areas[t] = 0.5f * length(cross(data_.positions[idx[1]] - p0, data_.positions[idx[2]] - p0));
+        total += areas[t];
+    }
+    // A mesh of only degenerate triangles has no area to emit from: area() stays 0.
+    if (total > 0.0f && std::isfinite(total)) triangle_areas_.emplace(areas);
+}
+
+float TriangleMesh::area() const { return triangle_areas_ ? triangle_areas_->total() : 0.0f; }
+
+std::optional<ShapeSample> TriangleMesh::sample_area(Vec2 u) const {
+    if (!triangle_areas_) return std::nullopt;
+    float u_remapped = 0.0f;
+    const std::size_t t = triangle_areas_->sample(u.x, nullptr, &u_remapped);
+    const std::array<float, 3> b = sample_uniform_triangle(Vec2(u_remapped, u.y));
+    const uint32_t* idx = &data_.indices[3 * t];
+    const Vec3& p0 = data_.positions[idx[0]];
+    const Vec3& p1 = data_.positions[idx[1]];
+    const Vec3& p2 = data_.positions[idx[2]];
+    ShapeSample s;
+    s.p = p0 * b[0] + p1 * b[1] + p2 * b[2];
+    s.n = normalize(cross(p1 - p0, p2 - p0));
+    s.uv = data_.uvs.empty() ? Vec2(b[1], b[2])
+                             : data_.uvs[idx[0]] * b[0] + data_.uvs[idx[1]] * b[1] + data_.uvs[idx[2]] * b[2];
+    s.pdf = 1.0f / triangle_areas_->total();
+    return s;
 }
 
 std::size_t TriangleMesh::memory_bytes() const {

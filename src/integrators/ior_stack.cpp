@@ -20,6 +20,7 @@ IorStack IorStack::entered(uint32_t material, float ior) const {
     if (next.size_ == kCapacity) {
         for (int i = 1; i < kCapacity; ++i) next.entries_[i - 1] = next.entries_[i];
         --next.size_;
+        next.lost_entries_ = true;
     }
     next.entries_[next.size_++] = {material, ior};
     return next;

@@ -1,6 +1,7 @@
 #include "glint/io/object_builder.h"
 
 #include "glint/geometry/box.h"
+#include "glint/geometry/disk.h"
 #include "glint/geometry/heightfield.h"
 #include "glint/geometry/quad.h"
 #include "glint/geometry/sphere.h"
@@ -21,8 +22,8 @@ namespace glint {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kShapeTypes{"sphere", "triangle", "mesh",       "quad",
-                                                      "plane",  "box",      "heightfield"};
+constexpr std::array<std::string_view, 8> kShapeTypes{"sphere", "triangle", "mesh",        "quad",
+                                                      "plane",  "box",      "heightfield", "disk"};
 
 /// A built shape; meshes with per-vertex materials need no object material.
 struct BuiltShape {
@@ -218,6 +219,13 @@ std::shared_ptr<Shape> simple_shape(const ParamTable& t, const std::string& type
         // Facing +y, u along +x and v along -z, so textures read left to right seen from above.
         const Vec3 u(size.x, 0.0f, 0.0f), v(0.0f, 0.0f, -size.y);
         return std::make_shared<Quad>(center - u * 0.5f - v * 0.5f, u, v);
+    }
+    if (type == "disk") {
+        const Vec3 normal = t.vec3("normal", Vec3(0.0f, 1.0f, 0.0f));
+        if (!(length(normal) > 0.0f)) t.fail("normal", "a non-zero direction the disk faces");
+        const float radius = t.require_number("radius");
+        if (!(radius > 0.0f)) t.fail("radius", "a positive radius");
+        return std::make_shared<Disk>(t.vec3("center", Vec3(0.0f)), normal, radius);
     }
     if (type == "box") {
         const Vec3 lo = t.require_vec3("min"), hi = t.require_vec3("max");

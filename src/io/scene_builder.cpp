@@ -1,6 +1,11 @@
 #include "glint/io/scene_builder.h"
 
+#include "glint/geometry/disk.h"
+#include "glint/geometry/quad.h"
+#include "glint/geometry/sphere.h"
 #include "glint/image/image_io.h"
+#include "glint/integrators/integrator_registry.h"
+#include "glint/io/transform_params.h"
 #include "glint/io/did_you_mean.h"
 #include "glint/io/object_builder.h"
 #include "glint/io/uv_transform_texture.h"
@@ -16,14 +21,15 @@ namespace glint {
 
 namespace {
 
-constexpr std::array<std::string_view, 2> kFilters{"box", "tent"};
+constexpr std::array<std::string_view, 4> kFilters{"box", "tent", "gaussian", "mitchell"};
+constexpr std::array<std::string_view, 2> kMisHeuristics{"balance", "power"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 constexpr std::array<std::string_view, 3> kBackgrounds{"color", "spheremap", "equirect"};
 constexpr std::array<std::string_view, 2> kShadowModes{"none", "opaque"};
 constexpr std::array<std::string_view, 2> kTextureTypes{"image", "checker"};
 constexpr std::array<std::string_view, 2> kWrapModes{"repeat", "clamp"};
 constexpr std::array<std::string_view, 2> kEncodings{"color", "data"};
-constexpr std::array<std::string_view, 3> kLightTypes{"point", "directional", "spot"};
+constexpr std::array<std::string_view, 6> kLightTypes{"point", "directional", "spot", "sphere", "quad", "disk"};
 constexpr std::array<std::string_view, 2> kFalloffs{"none", "inverse_square"};
 
 /// Everything the sections share while the scene is built.
@@ -58,6 +64,13 @@ struct Builder {
     }
 };
 
+PixelFilter parse_filter(std::string_view name) {
+    if (name == "tent") return PixelFilter::Tent;
+    if (name == "gaussian") return PixelFilter::Gaussian;
+    if (name == "mitchell") return PixelFilter::Mitchell;
+    return PixelFilter::Box;
+}
+
 /// An integer from `min` to `max`.
 uint32_t count(const ParamTable& t, std::string_view key, int64_t fallback, int64_t min, int64_t max) {
     const int64_t n = t.integer(key, fallback);
@@ -77,7 +90,16 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     const int64_t seed = t.integer("seed", 0);
     if (seed < 0) t.fail("seed", "a non-negative integer");
     s.seed = static_cast<uint64_t>(seed);
-    s.filter = t.choice("filter", kFilters, "box") == "tent" ? PixelFilter::Tent : PixelFilter::Box;
+    s.filter = parse_filter(t.choice("filter", kFilters, "box"));
+    if (t.find("filter_radius")) {
+        s.filter_radius = t.number("filter_radius", 0.0f);
+        if (!(s.filter_radius > 0.0f && s.filter_radius <= 16.0f))
+            t.fail("filter_radius", "a filter radius in pixels, above 0 and at most 16");
+    }
+    const std::vector<std::string_view> integrators = integrator_names();
+    s.integrator = t.choice("integrator", integrators, s.integrator);
+    s.light_samples = count(t, "light_samples", s.light_samples, 1, 1024);
+    s.mis = t.choice("mis", kMisHeuristics, "power") == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
     t.reject_unknown_keys();
 }
 
@@ -129,6 +151,7 @@ void read_world(const ParamTable& t, Scene& scene) {
     scene.dielectric_shadows = t.choice("dielectric_shadows", kShadowModes, "none") == "opaque"
                                    ? DielectricShadows::Opaque
                                    : DielectricShadows::None;
+    scene.emission_lights = t.boolean("emission_lights", scene.emission_lights);
     t.reject_unknown_keys();
 }
 
@@ -213,9 +236,48 @@ float degrees_in(const ParamTable& t, std::string_view key, float fallback, floa
     return a;
 }
 
-std::unique_ptr<Light> read_light(const ParamTable& t) {
+/// A colour that is not black: a light that emits nothing is a mistake.
+Color emission(const ParamTable& t, std::string_view key) {
+    const Color c = t.color(key, Color(1.0f));
+    if (c.is_black()) t.fail(key, "a colour with some positive component: a light that emits nothing lights nothing");
+    return c;
+}
+
+float positive(const ParamTable& t, std::string_view key, std::string_view what) {
+    const float x = t.require_number(key);
+    if (!(x > 0.0f)) t.fail(key, what);
+    return x;
+}
+
+/// `[[lights]]` of type sphere, quad or disk: a shape that emits `radiance` (nits).
+void read_area_light(const ParamTable& t, const std::string& type, Builder& b) {
+    const Color radiance = emission(t, "radiance");
+    std::shared_ptr<Shape> shape;
+    bool two_sided = false;
+    if (type == "sphere") {
+        shape = std::make_shared<Sphere>(t.vec3("center", Vec3(0.0f)), positive(t, "radius", "a positive radius"));
+    } else if (type == "quad") {
+        const Vec3 corner = t.require_vec3("corner"), u = t.require_vec3("edge_u"), v = t.require_vec3("edge_v");
+        if (!(length(cross(u, v)) > 0.0f)) t.fail("edge_v", "an edge that is non-zero and not parallel to edge_u (a quad of positive area)");
+        shape = std::make_shared<Quad>(corner, u, v);
+        two_sided = t.boolean("two_sided", false);
+    } else {
+        const Vec3 normal = t.vec3("normal", Vec3(0.0f, -1.0f, 0.0f));
+        if (!(length(normal) > 0.0f)) t.fail("normal", "a non-zero direction the disk faces");
+        shape = std::make_shared<Disk>(t.vec3("center", Vec3(0.0f)), normal, positive(t, "radius", "a positive radius"));
+        two_sided = t.boolean("two_sided", false);
+    }
+    std::optional<Transform> transform;
+    if (const ParamValue* v = t.find("transform")) transform = read_transform(*v, t.name_of("transform"));
+    const std::string name = t.string("name", "");
+    t.reject_unknown_keys();
+    b.out.scene.add_area_light(std::move(shape), Emitter{radiance, two_sided}, transform, name);
+}
+
+void read_light(const ParamTable& t, Builder& b) {
     const std::string type = t.choice("type", kLightTypes, "");
-    const Color intensity = t.color("intensity", Color(1.0f));
+    if (type == "sphere" || type == "quad" || type == "disk") return read_area_light(t, type, b);
+    const Color intensity = emission(t, "intensity");
     std::unique_ptr<Light> light;
     if (type == "directional") {
         const Vec3 direction = t.require_vec3("direction");
@@ -237,7 +299,7 @@ std::unique_ptr<Light> read_light(const ParamTable& t) {
         }
     }
     t.reject_unknown_keys();
-    return light;
+    b.out.scene.add_light(std::move(light));
 }
 
 }  // namespace
@@ -274,7 +336,7 @@ LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& bas
     if (background) out.scene.background = read_background(*background, b);
     for (const ParamTable* t : textures) read_texture(*t, b);
     for (const ParamTable* t : materials) read_material(*t, b);
-    for (const ParamTable* t : lights) out.scene.add_light(read_light(*t));
+    for (const ParamTable* t : lights) read_light(*t, b);
     add_objects(root, base_dir, out.scene, out.warnings);
     // Every builder rejected its own unknown keys; this catches tables none of them visited.
     root.reject_unknown_keys_recursive();
@@ -282,7 +344,7 @@ LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& bas
     const std::string file = root.where().file ? *root.where().file : std::string("<scene>");
     if (out.scene.objects().empty())
         out.warnings.push_back(file + ": the scene has no [[objects]]");
-    else if (out.scene.lights().empty() && out.scene.ambient_light.is_black())
+    else if (!out.scene.has_emitters() && out.scene.ambient_light.is_black())
         out.warnings.push_back(file +
                                ": the scene has no [[lights]] and no ambient light; only emission, "
                                "reflections and refractions of the background will show");

@@ -10,16 +10,30 @@ namespace glint {
 
 namespace {
 
+/// Physical irradiance at distance d from a π-scaled intensity.
 Color fall_off(const Color& intensity, float distance, Falloff falloff) {
-    return falloff == Falloff::InverseSquare ? intensity / (distance * distance) : intensity;
+    const Color e = falloff == Falloff::InverseSquare ? intensity / (distance * distance) : intensity;
+    return e * kPi;
+}
+
+LightSample delta_sample(const Vec3& direction, float distance, const Color& irradiance) {
+    LightSample s;
+    s.direction = direction;
+    s.distance = distance;
+    s.radiance = irradiance;
+    s.pdf = 1.0f;
+    s.is_delta = true;
+    return s;
 }
 
 }  // namespace
 
-LightSample PointLight::sample(const Vec3& point) const {
+LightSample PointLight::sample(const Vec3& point, Vec2) const {
     const Vec3 to_light = position_ - point;
     const float d = length(to_light);
-    return {to_light / d, d, fall_off(intensity_, d, falloff_)};
+    LightSample s = delta_sample(to_light / d, d, fall_off(intensity_, d, falloff_));
+    s.point = position_;
+    return s;
 }
 
 DirectionalLight::DirectionalLight(const Vec3& direction, const Color& irradiance)
@@ -27,7 +41,9 @@ DirectionalLight::DirectionalLight(const Vec3& direction, const Color& irradianc
     if (!is_finite(direction_)) throw std::invalid_argument("directional light needs a non-zero direction");
 }
 
-LightSample DirectionalLight::sample(const Vec3&) const { return {-direction_, kInfinity, irradiance_}; }
+LightSample DirectionalLight::sample(const Vec3&, Vec2) const {
+    return delta_sample(-direction_, kInfinity, irradiance_ * kPi);
+}
 
 SpotLight::SpotLight(const Vec3& position, const Vec3& direction, const Color& intensity, float inner_angle,
                      float outer_angle, Falloff falloff)
@@ -42,7 +58,7 @@ SpotLight::SpotLight(const Vec3& position, const Vec3& direction, const Color& i
         throw std::invalid_argument("spot light needs 0 <= inner angle <= outer angle <= 90 degrees");
 }
 
-LightSample SpotLight::sample(const Vec3& point) const {
+LightSample SpotLight::sample(const Vec3& point, Vec2) const {
     const Vec3 to_light = position_ - point;
     const float d = length(to_light);
     const Vec3 dir = to_light / d;
@@ -54,7 +70,9 @@ LightSample SpotLight::sample(const Vec3& point) const {
         const float x = (cos_angle - cos_outer_) / (cos_inner_ - cos_outer_);
         cone = x * x * (3.0f - 2.0f * x);
     }
-    return {dir, d, fall_off(intensity_, d, falloff_) * cone};
+    LightSample s = delta_sample(dir, d, fall_off(intensity_, d, falloff_) * cone);
+    s.point = position_;
+    return s;
 }
 
 }  // namespace glint

@@ -28,7 +28,61 @@ const Texture* Scene::add_texture(std::unique_ptr<Texture> texture) {
     return textures_.back().get();
 }
 
-void Scene::add_light(std::unique_ptr<Light> light) { lights_.push_back(std::move(light)); }
+void Scene::add_light(std::unique_ptr<Light> light) {
+    lights_.push_back(std::move(light));
+    prepared_ = false;
+}
+
+uint32_t Scene::add_area_light(std::shared_ptr<Shape> shape, const Emitter& emitter,
+                               const std::optional<Transform>& world_from_object, std::string name) {
+    Material black;
+    black.name = name.empty() ? "<area light>" : "<area light " + name + ">";
+    black.diffuse = Color(0.0f);
+    const uint32_t object = add_object(std::move(shape), add_material(std::move(black)), world_from_object, std::move(name));
+    objects_[object].emitter = emitter;
+    return object;
+}
+
+bool Scene::has_emitters() const {
+    if (!lights_.empty()) return true;
+    for (const SceneObject& o : objects_)
+        if (o.emitter || (emission_lights && o.material < materials_.size() && !materials_[o.material].emission.is_black()))
+            return true;
+    return false;
+}
+
+void Scene::build_area_lights() {
+    area_lights_.clear();
+    for (SceneObject& o : objects_) {
+        o.area_light = -1;
+        const std::optional<Transform> transform =
+            o.has_transform ? std::optional<Transform>(o.world_from_object) : std::nullopt;
+        if (o.emitter) {
+            area_lights_.push_back(
+                std::make_unique<AreaLight>(o.shape, transform, o.emitter->radiance, nullptr, o.emitter->two_sided));
+        } else if (emission_lights && o.material < materials_.size() && !materials_[o.material].emission.is_black()) {
+            o.shape->prepare_sampling();
+            // A shape without area (a heightfield) keeps its emission visible only.
+            if (!(o.shape->area() > 0.0f)) continue;
+            const Material& m = materials_[o.material];
+            // Glint's surfaces are two-sided, and so is what they emit.
+            area_lights_.push_back(std::make_unique<AreaLight>(o.shape, transform, m.emission, m.emission_texture, true));
+        } else {
+            continue;
+        }
+        o.area_light = int32_t(area_lights_.size() - 1);
+    }
+    all_lights_.clear();
+    for (const auto& l : lights_) all_lights_.push_back(l.get());
+    for (const auto& l : area_lights_) all_lights_.push_back(l.get());
+}
+
+Color Scene::emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const {
+    if (const AreaLight* light = area_light_of(object)) return light->emitted(si.p, si.geometric_normal, si.uv, wo);
+    Color le = m.emission;
+    if (m.emission_texture) le *= m.emission_texture->evaluate(si.uv, si.p);
+    return le;
+}
 
 uint32_t Scene::add_object(std::shared_ptr<Shape> shape, uint32_t material,
                            const std::optional<Transform>& world_from_object, std::string name) {
@@ -56,13 +110,13 @@ void Scene::prepare() {
     tbb::parallel_for_each(unique.begin(), unique.end(), [](Shape* shape) { shape->prepare(); });
 
     std::vector<Bounds3> boxes(objects_.size());
-    casts_shadows_.resize(objects_.size());
+    dielectric_.resize(objects_.size());
     for (size_t i = 0; i < objects_.size(); ++i) {
         const SceneObject& o = objects_[i];
         boxes[i] = o.has_transform ? o.world_from_object.bounds(o.shape->bounds()) : o.shape->bounds();
-        const bool dielectric = o.material < materials_.size() && materials_[o.material].is_dielectric();
-        casts_shadows_[i] = !(dielectric && dielectric_shadows == DielectricShadows::None);
+        dielectric_[i] = o.material < materials_.size() && materials_[o.material].is_dielectric();
     }
+    build_area_lights();
     // Top level: few, large primitives; one per leaf keeps every object test behind a box test.
     BvhBuildConfig config;
     config.max_leaf_size = 1;
@@ -84,8 +138,8 @@ bool Scene::intersect_object(uint32_t index, Ray& ray, Hit& hit) const {
     return true;
 }
 
-bool Scene::occluded_by_object(uint32_t index, const Ray& ray) const {
-    if (!casts_shadows_[index]) return false;
+bool Scene::occluded_by_object(uint32_t index, const Ray& ray, DielectricShadows mode) const {
+    if (dielectric_[index] && mode == DielectricShadows::None) return false;
     const SceneObject& o = objects_[index];
     return o.has_transform ? o.shape->occluded(o.object_from_world.ray(ray)) : o.shape->occluded(ray);
 }
@@ -94,9 +148,9 @@ bool Scene::intersect(Ray& ray, Hit& hit) const {
     return top_level_.traverse<false>(ray, [&](uint32_t object, Ray& r) { return intersect_object(object, r, hit); });
 }
 
-bool Scene::occluded(const Ray& ray) const {
+bool Scene::occluded(const Ray& ray, DielectricShadows mode) const {
     Ray r = ray;
-    return top_level_.traverse<true>(r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr); });
+    return top_level_.traverse<true>(r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr, mode); });
 }
 
 SurfaceInteraction Scene::interaction(const Ray& ray, const Hit& hit) const {

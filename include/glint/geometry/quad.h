@@ -16,6 +16,8 @@ public:
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    [[nodiscard]] float area() const override { return area_; }
+    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
     [[nodiscard]] std::size_t memory_bytes() const override { return sizeof(*this); }
     [[nodiscard]] std::string_view type_name() const override { return "quad"; }
 
@@ -23,6 +25,7 @@ private:
     bool hit_parameters(const Ray& ray, float& t, float& a, float& b) const;
 
     Vec3 corner_, edge_u_, edge_v_, normal_;
+    float area_ = 0.0f;
 };
 
 }  // namespace glint

@@ -5,10 +5,24 @@
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
 
+#include "glint/math/vec2.h"
+
 #include <cstddef>
+#include <optional>
 #include <string_view>
 
 namespace glint {
+
+/// A point on a shape's surface chosen for light sampling, in the shape's object space.
+struct ShapeSample {
+    Vec3 p;
+    /// Unit normal on the side the shape calls outside.
+    Vec3 n;
+    Vec2 uv;
+    /// Density of the choice: per unit area (sample_area) or per unit solid angle at the
+    /// receiving point (sample_toward).
+    float pdf = 0.0f;
+};
 
 /// A shape lives in its own object space; the scene places it with a transform
 /// (several placements of one shape share its data: instancing). A shape with
@@ -35,6 +49,24 @@ public:
     /// Build internal acceleration data. Called once by Scene::prepare(), possibly in parallel
     /// with other shapes' prepare().
     virtual void prepare() {}
+
+    /// Surface area in object space; 0 for a shape that cannot be sampled (it cannot be an
+    /// area light; its emission is then only seen).
+    [[nodiscard]] virtual float area() const { return 0.0f; }
+    /// A point uniformly distributed over the surface (pdf = 1/area per unit area).
+    [[nodiscard]] virtual std::optional<ShapeSample> sample_area(Vec2 u) const {
+        (void)u;
+        return std::nullopt;
+    }
+    /// A point as seen from `ref`, with its density per unit solid angle at `ref`. The
+    /// default converts area sampling: pdf_ω = pdf_A·d²/|cos θ_light| (pbrt-v4 §6.1.4);
+    /// shapes with a better strategy (spheres: the cone they subtend) override it.
+    [[nodiscard]] virtual std::optional<ShapeSample> sample_toward(const Vec3& ref, Vec2 u) const;
+    /// The density sample_toward(ref, ·) has at the surface point p with unit normal n.
+    [[nodiscard]] virtual float pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const;
+    /// Build what sampling needs (a mesh's triangle distribution); called once before a
+    /// shape serves as an area light.
+    virtual void prepare_sampling() {}
 
     [[nodiscard]] virtual std::size_t primitive_count() const { return 1; }
     /// Bytes of geometry and acceleration data this shape owns.

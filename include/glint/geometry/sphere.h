@@ -16,6 +16,12 @@ public:
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    [[nodiscard]] float area() const override;
+    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
+    /// From outside: uniform over the cone of directions the sphere subtends (pbrt-v4 §6.2.4),
+    /// so every sample hits the visible cap; from inside: uniform over the area.
+    [[nodiscard]] std::optional<ShapeSample> sample_toward(const Vec3& ref, Vec2 u) const override;
+    [[nodiscard]] float pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const override;
     [[nodiscard]] std::size_t memory_bytes() const override { return sizeof(*this); }
     [[nodiscard]] std::string_view type_name() const override { return "sphere"; }
 
@@ -23,6 +29,8 @@ public:
     [[nodiscard]] float radius() const { return radius_; }
 
 private:
+    /// Sphere uv of a unit direction from the centre.
+    [[nodiscard]] static Vec2 uv_of(const Vec3& n);
     /// Both roots of |o + t·d - c|² = r², ordered; false if the ray misses.
     bool roots(const Ray& ray, float& t_near, float& t_far) const;
 

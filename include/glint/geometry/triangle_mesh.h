@@ -5,7 +5,9 @@
 #include "glint/geometry/shape.h"
 #include "glint/materials/texture.h"
 #include "glint/math/vec2.h"
+#include "glint/sampling/discrete_distribution.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,10 @@ public:
     [[nodiscard]] bool occluded(const Ray& ray) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
     void prepare() override;
+    [[nodiscard]] float area() const override;
+    /// A triangle chosen by area (needs prepare_sampling()), then a uniform point in it.
+    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
+    void prepare_sampling() override;
     [[nodiscard]] std::size_t primitive_count() const override { return triangle_count(); }
     [[nodiscard]] std::size_t memory_bytes() const override;
     [[nodiscard]] std::string_view type_name() const override { return "mesh"; }
@@ -71,6 +77,8 @@ private:
     std::string name_;
     Bounds3 bounds_;
     TriangleBvh bvh_;
+    /// Triangles by area, for sampling the mesh as an area light (empty until needed).
+    std::optional<DiscreteDistribution> triangle_areas_;
     const Texture* alpha_mask_ = nullptr;
     float alpha_cutoff_ = 0.5f;
 };

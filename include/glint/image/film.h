@@ -1,5 +1,9 @@
 #pragma once
-/// \file The film: linear radiance per pixel.
+/// \file The film: per pixel, the weighted sum of radiance samples and the sum of weights.
+///
+/// Accumulating sums rather than finished averages lets a render add samples in passes
+/// (progressive preview) and carry filter weights (image/filter.h); a pixel's value is
+/// Σ w·L / Σ w (nori's ImageBlock, pbrt-v4's RGBFilm::AddSample).
 
 #include "glint/image/image.h"
 #include "glint/math/color.h"
@@ -15,14 +19,28 @@ public:
 
     [[nodiscard]] uint32_t width() const { return width_; }
     [[nodiscard]] uint32_t height() const { return height_; }
-    void set(uint32_t x, uint32_t y, const Color& c) { pixels_[std::size_t(y) * width_ + x] = c; }
-    [[nodiscard]] const Color& at(uint32_t x, uint32_t y) const { return pixels_[std::size_t(y) * width_ + x]; }
-    /// Three-channel float image of the film (linear).
+
+    /// Add radiance `radiance` with filter weight `weight` to pixel (x, y). A pixel is only
+    /// ever written by one thread at a time (the integrator's tiles do not overlap).
+    void add_sample(uint32_t x, uint32_t y, const Color& radiance, float weight) {
+        Pixel& p = pixels_[std::size_t(y) * width_ + x];
+        p.weighted_sum += radiance * weight;
+        p.weight_sum += weight;
+    }
+    /// The pixel's value: the weighted mean of its samples (black before any sample).
+    [[nodiscard]] Color at(uint32_t x, uint32_t y) const;
+    /// Sum of the weights that reached pixel (x, y).
+    [[nodiscard]] float weight_at(uint32_t x, uint32_t y) const { return pixels_[std::size_t(y) * width_ + x].weight_sum; }
+    /// Three-channel float image of the pixel values (linear).
     [[nodiscard]] Image to_image() const;
 
 private:
+    struct Pixel {
+        Color weighted_sum;
+        float weight_sum = 0.0f;
+    };
     uint32_t width_, height_;
-    std::vector<Color> pixels_;
+    std::vector<Pixel> pixels_;
 };
 
 }  // namespace glint

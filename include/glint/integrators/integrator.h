@@ -5,10 +5,12 @@
 #include "glint/integrators/render_settings.h"
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
-#include "glint/math/rng.h"
+#include "glint/sampling/sampler.h"
 
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace glint {
 
@@ -20,9 +22,9 @@ struct RenderStats {
     double seconds = 0.0;
 };
 
-/// Per-thread context handed to Li(): the pixel's random stream and a ray counter.
+/// Per-pixel-sample context handed to Li(): the sample generator and a ray counter.
 struct TraceContext {
-    Rng& rng;
+    Sampler& sampler;
     uint64_t rays = 0;
 };
 
@@ -33,18 +35,20 @@ public:
 
     virtual ~Integrator() = default;
 
-    /// Render the prepared scene into `film` (sized settings.width × settings.height), in
-    /// parallel 16×16 tiles. The result does not depend on the thread count: every pixel
-    /// draws from its own random stream (seed, pixel index).
+    /// Add settings.samples_per_axis² samples per pixel of the prepared scene to `film`, in
+    /// parallel 16×16 tiles, each weighted by settings.filter. The result does not depend on
+    /// the thread count: every sample is a function of (seed, pixel, sample index).
     RenderStats render(const Scene& scene, const RenderSettings& settings, Film& film,
                        const ProgressCallback& progress = {}) const;
 
     /// Radiance arriving at the camera along `ray`.
     [[nodiscard]] virtual Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const = 0;
 
-private:
-    [[nodiscard]] Color render_pixel(const Scene& scene, const RenderSettings& settings, uint32_t x, uint32_t y,
-                                     uint64_t& rays) const;
+    /// One line for each part of `scene` this integrator ignores (shown before rendering).
+    [[nodiscard]] virtual std::vector<std::string> warnings(const Scene& scene) const {
+        (void)scene;
+        return {};
+    }
 };
 
 }  // namespace glint

@@ -25,6 +25,10 @@ public:
     /// Stack after leaving `material`.
     [[nodiscard]] IorStack left(uint32_t material) const;
     [[nodiscard]] int depth() const { return size_; }
+    /// True if the ray is inside `material` by the stack's account.
+    [[nodiscard]] bool contains(uint32_t material) const { return find(material) >= 0; }
+    /// True once an overflow dropped an entry: the stack may no longer know every medium.
+    [[nodiscard]] bool lost_entries() const { return lost_entries_; }
 
 private:
     struct Entry {
@@ -36,6 +40,7 @@ private:
 
     std::array<Entry, kCapacity> entries_{};
     int size_ = 0;
+    bool lost_entries_ = false;
     float ambient_;
 };
 

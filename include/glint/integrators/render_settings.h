@@ -1,28 +1,46 @@
 #pragma once
-/// \file How to render: image size, samples, recursion depth, seed, threads.
+/// \file How to render: image size, samples, pixel filter, integrator and its parameters,
+/// seed, threads. One plain description, filled by a scene file and overridden by the
+/// command line; the film and the integrator are made from it.
 
 #include <cstdint>
+#include <string>
 
 namespace glint {
 
-/// Reconstruction filter: how a pixel's samples are spread over the image plane.
+/// Reconstruction filter: how a pixel's samples are spread and weighted (image/filter.h).
 enum class PixelFilter {
-    /// Samples uniform over the pixel's square, equally weighted.
+    /// Uniform over a square of half-width `radius` (0.5: the pixel), equal weights.
     Box,
-    /// Samples distributed by a tent of radius one pixel around the pixel centre (filter
-    /// importance sampling), equally weighted: softer edges than the box, no negative lobes.
+    /// A tent of radius `radius` (default 1 pixel), sampled by its inverse CDF.
     Tent,
+    /// A Gaussian with σ = radius/3, truncated at `radius` (default 1.5 pixels).
+    Gaussian,
+    /// Mitchell-Netravali (B = C = 1/3) of radius `radius` (default 2 pixels); its negative
+    /// lobes sharpen edges, and their samples carry negative weights.
+    Mitchell,
 };
+
+/// How next-event estimation and BSDF sampling are weighted against each other (Veach 1997).
+enum class MisHeuristic { Balance, Power };
 
 struct RenderSettings {
     uint32_t width = 512;
     uint32_t height = 512;
     /// N of the N×N stratified jittered samples per pixel.
     uint32_t samples_per_axis = 1;
-    /// Maximum number of reflection/refraction bounces after the camera ray.
+    /// Maximum number of bounces after the camera ray (reflection, refraction, scattering).
     uint32_t max_depth = 5;
     uint64_t seed = 0;
     PixelFilter filter = PixelFilter::Box;
+    /// Filter radius in pixels; 0 = the filter's default.
+    float filter_radius = 0.0f;
+    /// Integrator by registry name: "whitted" or "path" (integrators/integrator_registry.h).
+    std::string integrator = "whitted";
+    /// Whitted: samples per area light at every shading point (stratified among themselves).
+    uint32_t light_samples = 1;
+    /// Path: the MIS weighting of light and BSDF samples.
+    MisHeuristic mis = MisHeuristic::Power;
     /// 0 = all cores.
     uint32_t threads = 0;
 };

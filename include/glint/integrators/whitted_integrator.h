@@ -1,20 +1,28 @@
 #pragma once
-/// \file Turner Whitted's recursive ray tracer (1980).
+/// \file Turner Whitted's recursive ray tracer (1980), with stratified area-light sampling.
 
 #include "glint/integrators/integrator.h"
 #include "glint/integrators/ior_stack.h"
 
+#include <memory>
+
 namespace glint {
 
+class Bsdf;
 struct Material;
 struct SurfaceInteraction;
 
 /// Direct light (ambient, Lambert, optional Blinn-Phong) with shadow rays, recursive
 /// mirror reflection, and refraction with Schlick Fresnel and total internal reflection,
-/// following the material equation in glint/materials/material.h.
+/// following the material equation in docs/shading.md. Area lights are sampled
+/// `light_samples` times at every shading point, the samples stratified among themselves,
+/// so their penumbrae are smooth even at one sample per pixel.
 class WhittedIntegrator final : public Integrator {
 public:
-    explicit WhittedIntegrator(uint32_t max_depth = 5) : max_depth_(max_depth) {}
+    explicit WhittedIntegrator(uint32_t max_depth = 5, uint32_t light_samples = 1)
+        : max_depth_(max_depth), light_samples_(light_samples < 1 ? 1 : light_samples) {}
+    /// The registry's factory: max_depth and light_samples from the settings.
+    [[nodiscard]] static std::unique_ptr<Integrator> create(const RenderSettings& settings);
 
     [[nodiscard]] Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const override;
 
@@ -23,10 +31,12 @@ public:
                               TraceContext& context) const;
 
 private:
-    [[nodiscard]] Color direct_light(const Scene& scene, const Material& m, const SurfaceInteraction& si,
-                                     const Vec3& to_viewer, const Vec3& n, TraceContext& context) const;
+    /// Σ over lights of the BSDF's smooth lobes times the visible light (f·L·cosθ/pdf).
+    [[nodiscard]] Color direct_light(const Scene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
+                                     const Vec3& ng, TraceContext& context) const;
 
     uint32_t max_depth_;
+    uint32_t light_samples_;
 };
 
 }  // namespace glint

@@ -1,12 +1,16 @@
 #pragma once
 /// \file Light sources. Units and conventions: docs/units.md.
 ///
-/// A light gives, at a receiving point, the direction towards it, its distance, and the
-/// irradiance-like quantity E such that a white Lambertian surface facing the light
-/// reflects radiance E (Glint folds BRDF 1/π into light units, as the assignments do:
-/// L = kd·E·cosθ).
+/// Every light answers, for a receiving point and a uniform 2-D sample u: a direction
+/// towards the light, the distance, the radiance arriving along it, and the solid-angle
+/// density of that direction (pbrt-v4's `Light::SampleLi`). Point-like lights are Dirac
+/// deltas: one direction, pdf 1, and "radiance" is the irradiance they deliver at normal
+/// incidence. All returned quantities are physical; the scene-file parameters of point,
+/// spot and directional lights are π-scaled (a white Lambertian surface facing a light of
+/// intensity 1 with no falloff shows radiance 1), so these lights return π × parameter.
 
 #include "glint/math/color.h"
+#include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
 
 #include <string_view>
@@ -16,10 +20,18 @@ namespace glint {
 struct LightSample {
     /// Unit vector from the receiving point towards the light.
     Vec3 direction;
-    /// Distance to the light (kInfinity for directional lights): the shadow ray's tmax.
+    /// Distance to the sampled point (kInfinity for directional lights).
     float distance = 0.0f;
-    /// E at normal incidence; zero outside a spot light's cone.
-    Color irradiance;
+    /// Radiance arriving along `direction` (delta lights: the irradiance at normal incidence,
+    /// zero outside a spot light's cone).
+    Color radiance;
+    /// Density of `direction` per unit solid angle; 1 for delta lights. 0 = no sample.
+    float pdf = 0.0f;
+    bool is_delta = true;
+    /// The sampled point and its unit normal facing the receiver (area lights): the shadow
+    /// ray ends just off this surface so that the light's own geometry does not block it.
+    Vec3 point;
+    Vec3 normal;
 };
 
 /// How a point or spot light's intensity decays with distance d.
@@ -33,7 +45,15 @@ enum class Falloff {
 class Light {
 public:
     virtual ~Light() = default;
-    [[nodiscard]] virtual LightSample sample(const Vec3& point) const = 0;
+    /// Sample the light from `point` with u in [0,1)² (ignored by delta lights).
+    [[nodiscard]] virtual LightSample sample(const Vec3& point, Vec2 u) const = 0;
+    /// Solid-angle density with which sample(ref, ·) returns the light point p (unit normal
+    /// n); 0 for delta lights, which no ray can hit.
+    [[nodiscard]] virtual float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
+        (void)ref, (void)p, (void)n;
+        return 0.0f;
+    }
+    [[nodiscard]] virtual bool is_delta() const { return true; }
     [[nodiscard]] virtual std::string_view type_name() const = 0;
 };
 
@@ -41,9 +61,10 @@ class PointLight final : public Light {
 public:
     PointLight(const Vec3& position, const Color& intensity, Falloff falloff)
         : position_(position), intensity_(intensity), falloff_(falloff) {}
-    [[nodiscard]] LightSample sample(const Vec3& point) const override;
+    [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] std::string_view type_name() const override { return "point"; }
     [[nodiscard]] const Vec3& position() const { return position_; }
+    /// π-scaled intensity, as written in the scene.
     [[nodiscard]] const Color& intensity() const { return intensity_; }
     [[nodiscard]] Falloff falloff() const { return falloff_; }
 
@@ -57,9 +78,10 @@ private:
 class DirectionalLight final : public Light {
 public:
     DirectionalLight(const Vec3& direction, const Color& irradiance);
-    [[nodiscard]] LightSample sample(const Vec3& point) const override;
+    [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] std::string_view type_name() const override { return "directional"; }
     [[nodiscard]] const Vec3& direction() const { return direction_; }
+    /// π-scaled irradiance, as written in the scene.
     [[nodiscard]] const Color& irradiance() const { return irradiance_; }
 
 private:
@@ -74,7 +96,7 @@ class SpotLight final : public Light {
 public:
     SpotLight(const Vec3& position, const Vec3& direction, const Color& intensity, float inner_angle,
               float outer_angle, Falloff falloff);
-    [[nodiscard]] LightSample sample(const Vec3& point) const override;
+    [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] std::string_view type_name() const override { return "spot"; }
     [[nodiscard]] const Vec3& position() const { return position_; }
 

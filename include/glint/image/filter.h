@@ -1,0 +1,55 @@
+#pragma once
+/// \file Pixel reconstruction filters, applied by filter importance sampling.
+///
+/// Each camera sample is placed at an offset drawn from the filter's own distribution and
+/// carries the weight f/pdf (constant for positive filters, ±const for Mitchell's negative
+/// lobes); a pixel is the weighted mean of its samples. Every sample lands in exactly one
+/// pixel, so no thread writes another's pixels and images stay deterministic (pbrt-v4,
+/// "Filter Importance Sampling", Ernst et al. 2006).
+
+#include "glint/integrators/render_settings.h"
+#include "glint/math/vec2.h"
+
+#include <array>
+#include <string_view>
+
+namespace glint {
+
+struct FilterSample {
+    /// Offset from the pixel centre, in pixels.
+    Vec2 offset;
+    float weight = 1.0f;
+};
+
+class Filter {
+public:
+    /// `radius` 0 takes the filter's default. Throws std::invalid_argument for a negative
+    /// or non-finite radius.
+    Filter(PixelFilter kind, float radius = 0.0f);
+
+    /// Map a stratified u in [0,1)² to an offset and its weight; strata stay contiguous.
+    [[nodiscard]] FilterSample sample(Vec2 u) const;
+    /// The filter's value at `offset` (separable: f(x)·f(y)); zero outside the radius.
+    [[nodiscard]] float evaluate(Vec2 offset) const;
+
+    [[nodiscard]] PixelFilter kind() const { return kind_; }
+    [[nodiscard]] float radius() const { return radius_; }
+    [[nodiscard]] static float default_radius(PixelFilter kind);
+
+private:
+    static constexpr int kBins = 256;
+    [[nodiscard]] float profile(float x) const;
+    /// Sample one axis of a tabulated filter: |f| piecewise constant in kBins bins.
+    [[nodiscard]] float sample_axis(float u, float& weight) const;
+
+    PixelFilter kind_;
+    float radius_;
+    /// CDF of |f| over the bins (tabulated filters only), cdf_[kBins] = 1.
+    std::array<float, kBins + 1> cdf_{};
+    float integral_ = 0.0f;
+};
+
+/// The filter's name as in scene files and on the command line ("box", "tent", ...).
+[[nodiscard]] std::string_view filter_name(PixelFilter kind);
+
+}  // namespace glint

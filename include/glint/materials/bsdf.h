@@ -1,0 +1,100 @@
+#pragma once
+/// \file The scattering function of a material at one hit (the seam every integrator uses).
+///
+/// A `Bsdf` is built from a `Material` where a ray hit it, with the shading normal turned
+/// towards the viewer (surfaces are two-sided). It holds the material's lobes, each with the
+/// weight the Whitted material equation gives it (docs/shading.md):
+///
+///   smooth lobes   Lambert            f = (1−t)·kd·tex / π
+///                  Blinn-Phong        f = (1−t)·ks·(N·H)^s / π   (the seminar's highlight)
+///   delta lobes    mirror             (1−t)·kr, or Schlick with F0 = kr for metals
+///                  dielectric         t·F reflected, t·(1−F) transmitted (Schlick's F)
+///
+/// BRDFs are physical (the Lambert lobe of albedo kd is kd/π); lights return physical
+/// radiance or irradiance (lights/light.h), so f·L·cosθ/pdf is the same estimate in both
+/// integrators. `eval` and `pdf` see only the smooth lobes; `sample` picks any lobe with a
+/// probability proportional to its weight (Veach 1997, §9.2: one-sample mixture sampling).
+
+#include "glint/materials/material.h"
+#include "glint/math/color.h"
+#include "glint/math/vec2.h"
+#include "glint/math/vec3.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace glint {
+
+/// What kind of scattering a sampled direction came from (bit flags).
+enum BsdfFlags : uint8_t {
+    kBsdfReflection = 1,
+    kBsdfTransmission = 2,
+    /// A Dirac delta lobe (mirror, smooth glass): its pdf is not a density, and light
+    /// sampling cannot reach it.
+    kBsdfDelta = 4,
+};
+
+struct BsdfSample {
+    /// Unit direction the light arrives from (world space).
+    Vec3 wi;
+    /// f·|cos θi| / pdf: the factor the path throughput is multiplied by.
+    Color weight;
+    /// Solid-angle density of wi over all smooth lobes (for MIS); for a delta lobe, the
+    /// probability with which that lobe was chosen.
+    float pdf = 0.0f;
+    uint8_t flags = 0;
+};
+
+/// The two indices of refraction at a dielectric hit, from the integrator's media stack.
+struct Interface {
+    /// Index of the medium the viewer (wo) is in.
+    float eta_from = 1.0f;
+    /// Index of the medium beyond the surface.
+    float eta_to = 1.5f;
+};
+
+/// The perfectly specular part, for integrators that trace it deterministically (Whitted).
+struct SpecularLobes {
+    /// Weight of the mirror direction: the mirror lobe plus the dielectric's Fresnel reflection.
+    Color reflection;
+    /// Weight of the refracted direction (0 under total internal reflection).
+    float transmission = 0.0f;
+    Vec3 reflected;
+    /// The refracted direction, if any.
+    std::optional<Vec3> refracted;
+};
+
+class Bsdf {
+public:
+    /// `texture` multiplies kd (white for none). `n` is the unit shading normal and `ng` the
+    /// unit geometric normal, both on the viewer's side; `wo` the unit direction to the viewer.
+    Bsdf(const Material& m, const Color& texture, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media);
+
+    /// Sum of the smooth lobes' f(wo, wi); zero for wi under the shading or true surface.
+    [[nodiscard]] Color eval(const Vec3& wi) const;
+    /// Solid-angle density with which sample() returns wi through a smooth lobe.
+    [[nodiscard]] float pdf(const Vec3& wi) const;
+    /// Choose a lobe with `u_lobe`, then a direction with `u`. Empty if the BSDF is black or
+    /// the direction falls under the surface.
+    [[nodiscard]] std::optional<BsdfSample> sample(float u_lobe, Vec2 u) const;
+
+    /// True if some smooth lobe has weight (light sampling can help).
+    [[nodiscard]] bool has_smooth_lobes() const { return p_diffuse_ + p_highlight_ > 0.0f; }
+    [[nodiscard]] const SpecularLobes& specular() const { return specular_; }
+    [[nodiscard]] const Vec3& normal() const { return n_; }
+
+private:
+    [[nodiscard]] float highlight_pdf(const Vec3& wi) const;
+
+    Vec3 n_, ng_, wo_;
+    Color diffuse_;    ///< (1−t)·kd·tex
+    Color highlight_;  ///< (1−t)·ks
+    float shininess_ = 0.0f;
+    SpecularLobes specular_;
+    /// Relative index across the surface for the transmitted direction (eta_to/eta_from).
+    float eta_ = 1.0f;
+    /// Lobe selection probabilities, summing to 1 (or all 0 for a black BSDF).
+    float p_diffuse_ = 0.0f, p_highlight_ = 0.0f, p_reflect_ = 0.0f, p_transmit_ = 0.0f;
+};
+
+}  // namespace glint

@@ -1,0 +1,25 @@
+#include "glint/geometry/shape.h"
+
+#include <cmath>
+
+namespace glint {
+
+std::optional<ShapeSample> Shape::sample_toward(const Vec3& ref, Vec2 u) const {
+    std::optional<ShapeSample> s = sample_area(u);
+    if (!s) return std::nullopt;
+    s->pdf = pdf_toward(ref, s->p, s->n);
+    if (!(s->pdf > 0.0f) || !std::isfinite(s->pdf)) return std::nullopt;
+    return s;
+}
+
+float Shape::pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const {
+    const float a = area();
+    if (!(a > 0.0f)) return 0.0f;
+    const Vec3 d = p - ref;
+    const float dist2 = dot(d, d);
+    const float cos_light = std::abs(dot(n, d)) / std::sqrt(dist2);
+    if (cos_light == 0.0f) return 0.0f;
+    return dist2 / (cos_light * a);
+}
+
+}  // namespace glint

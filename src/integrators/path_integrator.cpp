@@ -1,0 +1,123 @@
+#include "glint/integrators/path_integrator.h"
+
+#include "glint/integrators/shading_point.h"
+#include "glint/math/offset_ray.h"
+#include "glint/scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint {
+
+namespace {
+
+/// Bounces before Russian roulette may end a path.
+constexpr uint32_t kRouletteDepth = 3;
+
+}  // namespace
+
+std::unique_ptr<Integrator> PathIntegrator::create(const RenderSettings& settings) {
+    return std::make_unique<PathIntegrator>(settings.max_depth, settings.mis);
+}
+
+std::vector<std::string> PathIntegrator::warnings(const Scene& scene) const {
+    std::vector<std::string> out;
+    if (!scene.ambient_light.is_black())
+        out.emplace_back(
+            "the path integrator ignores [world] ambient_light: ambient is a Whitted term; light comes from lights, "
+            "emission and the background");
+    return out;
+}
+
+float PathIntegrator::mis_weight(float pdf_a, float pdf_b) const {
+    if (heuristic_ == MisHeuristic::Balance) return pdf_a / (pdf_a + pdf_b);
+    const float a2 = pdf_a * pdf_a, b2 = pdf_b * pdf_b;
+    return a2 / (a2 + b2);
+}
+
+Color PathIntegrator::Li(const Scene& scene, const Ray& camera_ray, TraceContext& context) const {
+    Sampler& sampler = context.sampler;
+    const std::vector<const Light*>& lights = scene.all_lights();
+    const float light_choice_pdf = lights.empty() ? 0.0f : 1.0f / float(lights.size());
+
+    Color radiance, throughput(1.0f);
+    Ray ray = camera_ray;
+    IorStack media(scene.ambient_ior);
+    // The previous bounce: was it a delta lobe, its BSDF density and where it was.
+    bool specular_bounce = true;
+    float bsdf_pdf = 0.0f;
+    Vec3 previous_point;
+
+    for (uint32_t depth = 0;; ++depth) {
+        ++context.rays;
+        Ray r = ray;
+        Hit hit;
+        if (!scene.intersect(r, hit)) {
+            // The background is not sampled as a light, so what BSDF sampling finds counts in full.
+            radiance += throughput * scene.background.evaluate(ray.direction);
+            break;
+        }
+        const SurfaceInteraction si = scene.interaction(r, hit);
+        const ShadingPoint sp = shading_point(scene, si, ray, media);
+        const Material& m = *sp.material;
+
+        const Color le = scene.emitted(hit.object, m, si, sp.wo);
+        if (!le.is_black()) {
+            const AreaLight* light = scene.area_light_of(hit.object);
+            float weight = 1.0f;
+            if (light && !specular_bounce)
+                weight = mis_weight(bsdf_pdf, light_choice_pdf * light->pdf(previous_point, si.p, si.geometric_normal));
+            radiance += throughput * le * weight;
+        }
+        if (depth >= max_depth_) break;
+
+        const Bsdf bsdf(m, diffuse_texture(m, si), sp.n, sp.ng, sp.wo, sp.media);
+
+        // Next-event estimation: one light, chosen uniformly.
+        const float u_light = sampler.next_1d();
+        const Vec2 u_light_point = sampler.next_2d();
+        if (bsdf.has_smooth_lobes() && !lights.empty()) {
+            const auto chosen = std::min(std::size_t(u_light * float(lights.size())), lights.size() - 1);
+            const Light& light = *lights[chosen];
+            const LightSample ls = light.sample(si.p, u_light_point);
+            if (ls.pdf > 0.0f && !ls.radiance.is_black()) {
+                const Color f = bsdf.eval(ls.direction);
+                if (!f.is_black()) {
+                    ++context.rays;
+                    if (!scene.occluded(shadow_ray(si.p, sp.ng, ls), DielectricShadows::Opaque)) {
+                        const float pdf = light_choice_pdf * ls.pdf;
+                        const float weight = ls.is_delta ? 1.0f : mis_weight(pdf, bsdf.pdf(ls.direction));
+                        radiance += throughput * f * ls.radiance * (dot(sp.n, ls.direction) * weight / pdf);
+                    }
+                }
+            }
+        }
+
+        // Continue the path by sampling the BSDF.
+        const float u_lobe = sampler.next_1d();
+        const Vec2 u_direction = sampler.next_2d();
+        const std::optional<BsdfSample> bs = bsdf.sample(u_lobe, u_direction);
+        if (!bs) break;
+        throughput *= bs->weight;
+        specular_bounce = (bs->flags & kBsdfDelta) != 0;
+        bsdf_pdf = bs->pdf;
+        previous_point = si.p;
+        if (bs->flags & kBsdfTransmission) {
+            media = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
+            ray = Ray(offset_ray_origin(si.p, -sp.ng), bs->wi);
+        } else {
+            ray = Ray(offset_ray_origin(si.p, sp.ng), bs->wi);
+        }
+
+        // Russian roulette (Arvo & Kirk 1990): unbiased, since survivors are reweighted.
+        const float u_roulette = sampler.next_1d();
+        if (depth + 1 >= kRouletteDepth) {
+            const float survive = std::min(0.95f, throughput.max_component());
+            if (!(u_roulette < survive)) break;
+            throughput *= 1.0f / survive;
+        }
+    }
+    return radiance;
+}
+
+}  // namespace glint

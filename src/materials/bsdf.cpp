@@ -1,0 +1,130 @@
+#include "glint/materials/bsdf.h"
+
+#include "glint/integrators/optics.h"
+#include "glint/math/constants.h"
+#include "glint/math/frame.h"
+#include "glint/sampling/warp.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint {
+
+namespace {
+
+float average(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
+
+/// Local (x, y, z) → world with z along n.
+Vec3 to_world(const Vec3& local, const Vec3& n) {
+    Vec3 b1, b2;
+    orthonormal_basis(n, b1, b2);
+    return b1 * local.x + b2 * local.y + n * local.z;
+}
+
+}  // namespace
+
+Bsdf::Bsdf(const Material& m, const Color& texture, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media)
+    : n_(n), ng_(ng), wo_(wo) {
+    const float t = std::clamp(m.transparency, 0.0f, 1.0f);
+    diffuse_ = m.diffuse * texture * (1.0f - t);
+    highlight_ = m.specular * (1.0f - t);
+    shininess_ = m.shininess;
+
+    const Vec3 d = -wo;
+    specular_.reflected = reflect(d, n);
+    Color mirror = m.reflectivity;
+    if (m.fresnel_mirror) {
+        // Schlick with a coloured F0 (metals): F = F0 + (1 − F0)(1 − cos θ)^5.
+        const float c = 1.0f - std::clamp(dot(n, wo), 0.0f, 1.0f);
+        const float c5 = c * c * c * c * c;
+        mirror = m.reflectivity + (Color(1.0f) - m.reflectivity) * c5;
+    }
+    specular_.reflection = mirror * (1.0f - t);
+    if (t > 0.0f) {
+        specular_.refracted = refract(d, n, media.eta_from, media.eta_to);
+        eta_ = media.eta_to / media.eta_from;
+        // Under total internal reflection all of the dielectric's weight is reflected.
+        const float fresnel = specular_.refracted ? fresnel_schlick(d, n, media.eta_from, media.eta_to) : 1.0f;
+        specular_.reflection += Color(t * fresnel);
+        specular_.transmission = t * (1.0f - fresnel);
+    }
+
+    // Lobe choice in proportion to an estimate of each lobe's albedo; any positive choice is
+    // unbiased. The Blinn-Phong lobe's albedo falls roughly as 8/(s+2) for large exponents.
+    const float w_diffuse = average(diffuse_);
+    const float w_highlight = average(highlight_) * std::min(1.0f, 8.0f / (shininess_ + 2.0f));
+    const float w_reflect = average(specular_.reflection);
+    const float w_transmit = specular_.transmission;
+    const float total = w_diffuse + w_highlight + w_reflect + w_transmit;
+    if (total > 0.0f) {
+        p_diffuse_ = w_diffuse / total;
+        p_highlight_ = w_highlight / total;
+        p_reflect_ = w_reflect / total;
+        p_transmit_ = w_transmit / total;
+    }
+}
+
+Color Bsdf::eval(const Vec3& wi) const {
+    // Reflection only, on the viewer's side of both the shading and the true surface.
+    const float cos_i = dot(n_, wi);
+    if (cos_i <= 0.0f || dot(ng_, wi) <= 0.0f) return Color();
+    Color f = diffuse_ * kInvPi;
+    if (!highlight_.is_black()) {
+        const Vec3 h = normalize(wi + wo_);
+        f += highlight_ * (std::pow(std::max(dot(n_, h), 0.0f), shininess_) * kInvPi);
+    }
+    return f;
+}
+
+float Bsdf::highlight_pdf(const Vec3& wi) const {
+    // Half-vector density (s+1)/2π·cos^s θh, times the Jacobian 1/(4 wo·h) of reflection
+    // (Walter et al. 2007, eq. 14).
+    const Vec3 h = normalize(wi + wo_);
+    const float wo_h = dot(wo_, h);
+    if (wo_h <= 0.0f) return 0.0f;
+    return phong_lobe_pdf(dot(n_, h), shininess_) / (4.0f * wo_h);
+}
+
+float Bsdf::pdf(const Vec3& wi) const {
+    if (dot(n_, wi) <= 0.0f || dot(ng_, wi) <= 0.0f) return 0.0f;
+    float p = 0.0f;
+    if (p_diffuse_ > 0.0f) p += p_diffuse_ * cosine_hemisphere_pdf(dot(n_, wi));
+    if (p_highlight_ > 0.0f) p += p_highlight_ * highlight_pdf(wi);
+    return p;
+}
+
+std::optional<BsdfSample> Bsdf::sample(float u_lobe, Vec2 u) const {
+    BsdfSample s;
+    if (u_lobe < p_diffuse_ + p_highlight_) {
+        if (u_lobe < p_diffuse_) {
+            s.wi = to_world(sample_cosine_hemisphere(u), n_);
+        } else {
+            const Vec3 h = to_world(sample_phong_lobe(u, shininess_), n_);
+            s.wi = reflect(-wo_, h);
+        }
+        s.pdf = pdf(s.wi);
+        if (!(s.pdf > 0.0f)) return std::nullopt;
+        s.weight = eval(s.wi) * (dot(n_, s.wi) / s.pdf);
+        s.flags = kBsdfReflection;
+        return s;
+    }
+    if (u_lobe < p_diffuse_ + p_highlight_ + p_reflect_) {
+        s.wi = specular_.reflected;
+        s.pdf = p_reflect_;
+        s.weight = specular_.reflection / p_reflect_;
+        s.flags = kBsdfReflection | kBsdfDelta;
+        return s;
+    }
+    if (p_transmit_ > 0.0f && specular_.refracted) {
+        s.wi = *specular_.refracted;
+        s.pdf = p_transmit_;
+        // Radiance is compressed by (η_from/η_to)² on crossing into a denser medium (Veach
+        // 1997, §5.2): the 1/η² of pbrt-v4's DielectricBxDF in radiance mode.
+        s.weight = Color(specular_.transmission / (p_transmit_ * eta_ * eta_));
+        s.flags = kBsdfTransmission | kBsdfDelta;
+        return s;
+    }
+    return std::nullopt;
+}
+
+}  // namespace glint
