@@ -193,23 +193,27 @@ double adaptive_simpson(const F& f, double a, double b, double eps, int depth) {
 /// ∫∫ f(x, y) over [x0, x1] × [y0, y1]: adaptive Simpson over x of adaptive Simpson over y
 /// (nori's `adaptiveSimpson2D`), each axis started on 4 panels so that a density confined to a
 /// sliver of the cell (a cone edge, a triangle corner) is not missed by the first 5 points.
-/// Both recursions may go 20 levels deep, so a jump (the rim of a cone, the edge of a
-/// triangle) leaves an error of ~2^-20 of a panel's mass; only the intervals holding the
-/// jump refine that far, and where the pdf is smooth five points per interval suffice.
+/// Both recursions may go `max_depth` levels deep, so a jump (the rim of a cone, the edge of
+/// a triangle) leaves an error of ~2^-max_depth of a panel's mass; only the intervals holding
+/// the jump refine that far, and where the pdf is smooth five points per interval suffice.
+/// Pdfs computed in single precision have rounding noise that no depth brings under a tight
+/// tolerance: grid_test stops at 12 levels (2^-12 of a panel, far below the counts' noise),
+/// where 20 took minutes for a Blinn-Phong lobe.
 template <class F>
-double integrate_2d(const F& f, double x0, double x1, double y0, double y1, double eps) {
+double integrate_2d(const F& f, double x0, double x1, double y0, double y1, double eps, int max_depth = 20) {
     constexpr int kPanels = 4;
+    const int kMaxDepth = max_depth;
     const double hx = (x1 - x0) / kPanels, hy = (y1 - y0) / kPanels;
     auto inner = [&](double x) {
         double sum = 0.0;
         for (int k = 0; k < kPanels; ++k) {
             sum += adaptive_simpson([&](double y) { return f(x, y); }, y0 + k * hy, y0 + (k + 1) * hy,
-                                    eps / (x1 - x0) / kPanels, 20);
+                                    eps / (x1 - x0) / kPanels, kMaxDepth);
         }
         return sum;
     };
     double sum = 0.0;
-    for (int k = 0; k < kPanels; ++k) sum += adaptive_simpson(inner, x0 + k * hx, x0 + (k + 1) * hx, eps / kPanels, 20);
+    for (int k = 0; k < kPanels; ++k) sum += adaptive_simpson(inner, x0 + k * hx, x0 + (k + 1) * hx, eps / kPanels, kMaxDepth);
     return sum;
 }
 
@@ -251,7 +255,7 @@ Chi2Result grid_test(const Draw& draw, const Density& density, int nx, int ny, d
         for (int iy = 0; iy < ny; ++iy) {
             // 1e-9 of probability per cell: a thousandth of a sample at 10^6 samples.
             const double p =
-                integrate_2d(density, x0 + ix * dx, x0 + (ix + 1) * dx, y0 + iy * dy, y0 + (iy + 1) * dy, 1e-9);
+                integrate_2d(density, x0 + ix * dx, x0 + (ix + 1) * dx, y0 + iy * dy, y0 + (iy + 1) * dy, 1e-9, 12);
             mass += p;
             expected[static_cast<std::size_t>(ix) * ny + iy] = p * static_cast<double>(samples);
         }

@@ -44,5 +44,34 @@ grep -Eq 'typo\.toml:[0-9]+:[0-9]+: ' err.txt || fail "scene error lacks file:li
 [ -e typo.png ] && fail "scene error left an output file"
 ls -A | grep -q partial && fail "a temporary file was left behind"
 
+# 5. Integrators by name: both render, an unknown one is refused with the known names, and
+# the path tracer says once that it ignores the ambient term of a Whitted scene.
+cat > lit.toml <<'TOML'
+[world]
+ambient_light = 0.1
+[[materials]]
+name = "white"
+[[lights]]
+type = "sphere"
+center = [0, 3, 0]
+radius = 0.5
+radiance = 5
+[[objects]]
+type = "plane"
+size = 4
+material = "white"
+TOML
+"$glint" render lit.toml -o whitted.png --width 16 --height 12 --light-samples 4 -q >/dev/null ||
+  fail "whitted with an area light failed"
+"$glint" render lit.toml -o path.png --width 16 --height 12 --integrator path -q >/dev/null 2>err.txt ||
+  fail "path render failed: $(cat err.txt)"
+[ -s path.png ] || fail "path render wrote no image"
+[ "$(grep -c 'ignores \[world\] ambient_light' err.txt)" -eq 1 ] || fail "path: no single ambient warning: $(cat err.txt)"
+if "$glint" render lit.toml -o unknown.png --integrator pathtracer -q 2>err.txt; then fail "unknown integrator accepted"; fi
+grep -q "whitted" err.txt || fail "unknown integrator error does not list the known ones: $(cat err.txt)"
+[ -e unknown.png ] && fail "unknown integrator left a file"
+if "$glint" render lit.toml -o f.png --filter lanczos -q 2>err.txt; then fail "unknown filter accepted"; fi
+grep -q "mitchell" err.txt || fail "unknown filter error does not list the known ones: $(cat err.txt)"
+
 echo "$(( failures == 0 ? 1 : 0 )) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -7,6 +7,7 @@
 #include "glint/io/did_you_mean.h"
 #include "glint/io/source_excerpt.h"
 #include "glint/io/toml_scene_loader.h"
+#include "toml_text.h"
 #include "glint/scene/default_scene.h"
 
 #include <gtest/gtest.h>
@@ -17,29 +18,6 @@
 
 namespace glint {
 namespace {
-
-const std::filesystem::path kScenes = std::filesystem::path(GLINT_SOURCE_DIR) / "scenes";
-
-LoadedScene load(std::string_view text) { return load_toml_scene_string(text, "test.toml", kScenes); }
-
-/// The SceneError message for `text`, or a test failure if it loads.
-std::string error_of(std::string_view text) {
-    try {
-        (void)load(text);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected a SceneError for:\n" << text;
-    return {};
-}
-
-/// The message starts with `location` ("test.toml:line:column:") and contains every word.
-void expect_error(std::string_view text, const std::string& location, std::initializer_list<std::string> words) {
-    const std::string message = error_of(text);
-    EXPECT_EQ(message.rfind(location, 0), 0u) << "expected the message to start with " << location << ":\n" << message;
-    for (const std::string& w : words)
-        EXPECT_NE(message.find(w), std::string::npos) << "missing '" << w << "' in:\n" << message;
-}
 
 constexpr std::string_view kRed = "[[materials]]\nname = \"red\"\n";
 

@@ -8,11 +8,6 @@ namespace glint {
 
 namespace {
 
-/// Map a uniform ξ in [0,1) to the tent distribution on (-1, 1) by inverting its CDF.
-float sample_tent(float xi) {
-    return xi < 0.5f ? std::sqrt(2.0f * xi) - 1.0f : 1.0f - std::sqrt(2.0f - 2.0f * xi);
-}
-
 /// Mitchell & Netravali, "Reconstruction Filters in Computer Graphics" (1988), eq. 8, on
 /// |x| ≤ 2 with B = C = 1/3, the pair they recommend.
 float mitchell_1d(float x) {
@@ -91,19 +86,11 @@ float Filter::sample_axis(float u, float& weight) const {
     return x;
 }
 
-FilterSample Filter::sample(Vec2 u) const {
-    switch (kind_) {
-        case PixelFilter::Box: return {{(u.x - 0.5f) * 2.0f * radius_, (u.y - 0.5f) * 2.0f * radius_}, 1.0f};
-        case PixelFilter::Tent: return {{radius_ * sample_tent(u.x), radius_ * sample_tent(u.y)}, 1.0f};
-        case PixelFilter::Gaussian:
-        case PixelFilter::Mitchell: {
-            float wx = 1.0f, wy = 1.0f;
-            const float x = sample_axis(u.x, wx);
-            const float y = sample_axis(u.y, wy);
-            return {{x, y}, wx * wy};
-        }
-    }
-    return {};
+FilterSample Filter::sample_tabulated(Vec2 u) const {
+    float wx = 1.0f, wy = 1.0f;
+    const float x = sample_axis(u.x, wx);
+    const float y = sample_axis(u.y, wy);
+    return {{x, y}, wx * wy};
 }
 
 }  // namespace glint

@@ -36,14 +36,4 @@ Color diffuse_texture(const Material& m, const SurfaceInteraction& si) {
     return m.texture ? m.texture->evaluate(si.uv, si.p) : Color(1.0f);
 }
 
-Ray shadow_ray(const Vec3& p, const Vec3& ng, const LightSample& ls) {
-    const Vec3 origin = offset_ray_origin(p, ng);
-    if (ls.is_delta) return Ray(origin, ls.direction, 0.0f, ls.distance);
-    const Vec3 target = offset_ray_origin(ls.point, ls.normal);
-    const Vec3 d = target - origin;
-    const float dist = length(d);
-    // Stop a hair short of the offset end point: the light's own surface lies beyond it.
-    return Ray(origin, d / dist, 0.0f, dist * (1.0f - 1e-4f));
-}
-
 }  // namespace glint

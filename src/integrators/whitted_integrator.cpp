@@ -29,14 +29,14 @@ Color WhittedIntegrator::direct_light(const Scene& scene, const Bsdf& bsdf, cons
         if (scene.occluded(shadow_ray(si.p, ng, ls))) return;
         sum += f * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
     };
-    std::array<Vec2, 16> small;
-    std::vector<Vec2> large;
     for (const Light* light : scene.all_lights()) {
         if (light->is_delta()) {
             add(light->sample(si.p, Vec2()), 1.0f);
             continue;
         }
         // N stratified samples of this light: the estimate (1/N) Σ f·L·cosθ/pdf.
+        std::array<Vec2, 16> small;
+        std::vector<Vec2> large;
         std::span<Vec2> us(small.data(), light_samples_);
         if (light_samples_ > small.size()) {
             large.resize(light_samples_);

@@ -92,11 +92,16 @@ void Sampler::start_pixel_sample(uint64_t pixel, uint32_t index) {
     pixel_ = pixel;
     index_ = index;
     dimension_ = 0;
-    // The pixel's PCG32 stream drawn two numbers per sample in order: jump to this sample's pair.
-    pcg32 stream(seed_, pixel);
-    stream.advance(2ull * index);
-    const float ux = float(stream() >> 8) * 0x1p-24f;
-    const float uy = float(stream() >> 8) * 0x1p-24f;
+    // The pixel's PCG32 stream drew two numbers per sample in order: jump to this sample's
+    // pair unless it is the next one anyway.
+    if (pixel != stream_pixel_ || index != stream_next_index_) {
+        stream_ = pcg32(seed_, pixel);
+        stream_.advance(2ull * index);
+        stream_pixel_ = pixel;
+    }
+    stream_next_index_ = index + 1;
+    const float ux = float(stream_() >> 8) * 0x1p-24f;
+    const float uy = float(stream_() >> 8) * 0x1p-24f;
     pixel_2d_ = {(float(index % n_) + ux) / float(n_), (float(index / n_) + uy) / float(n_)};
 }
 

@@ -72,6 +72,8 @@ void Scene::build_area_lights() {
         }
         o.area_light = int32_t(area_lights_.size() - 1);
     }
+    object_lights_.clear();
+    for (const SceneObject& o : objects_) object_lights_.push_back(o.area_light);
     all_lights_.clear();
     for (const auto& l : lights_) all_lights_.push_back(l.get());
     for (const auto& l : area_lights_) all_lights_.push_back(l.get());

@@ -11,6 +11,7 @@
 #include "glint/math/vec2.h"
 
 #include <array>
+#include <cmath>
 #include <string_view>
 
 namespace glint {
@@ -28,7 +29,14 @@ public:
     Filter(PixelFilter kind, float radius = 0.0f);
 
     /// Map a stratified u in [0,1)² to an offset and its weight; strata stay contiguous.
-    [[nodiscard]] FilterSample sample(Vec2 u) const;
+    /// Inline: it runs once per camera sample.
+    [[nodiscard]] FilterSample sample(Vec2 u) const {
+        switch (kind_) {
+            case PixelFilter::Box: return {{(u.x - 0.5f) * 2.0f * radius_, (u.y - 0.5f) * 2.0f * radius_}, 1.0f};
+            case PixelFilter::Tent: return {{radius_ * sample_tent(u.x), radius_ * sample_tent(u.y)}, 1.0f};
+            default: return sample_tabulated(u);
+        }
+    }
     /// The filter's value at `offset` (separable: f(x)·f(y)); zero outside the radius.
     [[nodiscard]] float evaluate(Vec2 offset) const;
 
@@ -38,6 +46,11 @@ public:
 
 private:
     static constexpr int kBins = 256;
+    /// Map a uniform ξ in [0,1) to the tent distribution on (-1, 1) by inverting its CDF.
+    [[nodiscard]] static float sample_tent(float xi) {
+        return xi < 0.5f ? std::sqrt(2.0f * xi) - 1.0f : 1.0f - std::sqrt(2.0f - 2.0f * xi);
+    }
+    [[nodiscard]] FilterSample sample_tabulated(Vec2 u) const;
     [[nodiscard]] float profile(float x) const;
     /// Sample one axis of a tabulated filter: |f| piecewise constant in kBins bins.
     [[nodiscard]] float sample_axis(float u, float& weight) const;

@@ -8,6 +8,7 @@
 #include "glint/lights/light.h"
 #include "glint/materials/bsdf.h"
 #include "glint/materials/material.h"
+#include "glint/math/offset_ray.h"
 #include "glint/math/ray.h"
 
 #include <optional>
@@ -44,6 +45,14 @@ struct ShadingPoint {
 /// The shadow ray from a surface point (geometric normal `ng` on the side the light is) to a
 /// light sample: unbounded for directional lights, ending at the light's point for point
 /// lights, and ending just off the surface of an area light so that it cannot block itself.
-[[nodiscard]] Ray shadow_ray(const Vec3& p, const Vec3& ng, const LightSample& ls);
+[[nodiscard]] inline Ray shadow_ray(const Vec3& p, const Vec3& ng, const LightSample& ls) {
+    const Vec3 origin = offset_ray_origin(p, ng);
+    if (ls.is_delta) return Ray(origin, ls.direction, 0.0f, ls.distance);
+    const Vec3 target = offset_ray_origin(ls.point, ls.normal);
+    const Vec3 d = target - origin;
+    const float dist = length(d);
+    // Stop a hair short of the offset end point: the light's own surface lies beyond it.
+    return Ray(origin, d / dist, 0.0f, dist * (1.0f - 1e-4f));
+}
 
 }  // namespace glint

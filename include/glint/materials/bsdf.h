@@ -17,9 +17,12 @@
 
 #include "glint/materials/material.h"
 #include "glint/math/color.h"
+#include "glint/math/constants.h"
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -71,7 +74,19 @@ public:
     Bsdf(const Material& m, const Color& texture, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media);
 
     /// Sum of the smooth lobes' f(wo, wi); zero for wi under the shading or true surface.
-    [[nodiscard]] Color eval(const Vec3& wi) const;
+    /// Inline: the Whitted integrator calls it for every light at every hit.
+    [[nodiscard]] Color eval(const Vec3& wi) const {
+        // Reflection only, on the viewer's side of both the shading and the true surface.
+        if (dot(n_, wi) <= 0.0f || dot(ng_, wi) <= 0.0f) return Color();
+        Color f = diffuse_ * kInvPi;
+        const Vec3 half = wi + wo_;
+        // wi = −wo has no half-vector (and lies under the surface for any wo above it).
+        if (!highlight_.is_black() && dot(half, half) > 0.0f) {
+            const Vec3 h = normalize(half);
+            f += highlight_ * (std::pow(std::max(dot(n_, h), 0.0f), shininess_) * kInvPi);
+        }
+        return f;
+    }
     /// Solid-angle density with which sample() returns wi through a smooth lobe.
     [[nodiscard]] float pdf(const Vec3& wi) const;
     /// Choose a lobe with `u_lobe`, then a direction with `u`. Empty if the BSDF is black or
@@ -79,11 +94,17 @@ public:
     [[nodiscard]] std::optional<BsdfSample> sample(float u_lobe, Vec2 u) const;
 
     /// True if some smooth lobe has weight (light sampling can help).
-    [[nodiscard]] bool has_smooth_lobes() const { return p_diffuse_ + p_highlight_ > 0.0f; }
+    [[nodiscard]] bool has_smooth_lobes() const { return !diffuse_.is_black() || !highlight_.is_black(); }
     [[nodiscard]] const SpecularLobes& specular() const { return specular_; }
     [[nodiscard]] const Vec3& normal() const { return n_; }
 
 private:
+    /// Lobe selection probabilities, summing to 1 (or all 0 for a black BSDF).
+    struct LobeChoice {
+        float diffuse = 0.0f, highlight = 0.0f, reflect = 0.0f, transmit = 0.0f;
+    };
+    [[nodiscard]] LobeChoice lobe_choice() const;
+    [[nodiscard]] float pdf(const Vec3& wi, const LobeChoice& p) const;
     [[nodiscard]] float highlight_pdf(const Vec3& wi) const;
 
     Vec3 n_, ng_, wo_;
@@ -93,8 +114,6 @@ private:
     SpecularLobes specular_;
     /// Relative index across the surface for the transmitted direction (eta_to/eta_from).
     float eta_ = 1.0f;
-    /// Lobe selection probabilities, summing to 1 (or all 0 for a black BSDF).
-    float p_diffuse_ = 0.0f, p_highlight_ = 0.0f, p_reflect_ = 0.0f, p_transmit_ = 0.0f;
 };
 
 }  // namespace glint

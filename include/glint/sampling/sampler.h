@@ -5,6 +5,7 @@
 #include "glint/math/vec2.h"
 
 #include <cstdint>
+#include <pcg_random.hpp>
 #include <span>
 
 namespace glint {
@@ -47,6 +48,11 @@ private:
     uint32_t index_ = 0;
     uint32_t dimension_ = 0;
     Vec2 pixel_2d_;
+    /// The pixel dimension's PCG32 stream, kept between consecutive samples of one pixel so
+    /// that the common in-order walk costs two draws, not a seek (pcg32::advance).
+    pcg32 stream_;
+    uint64_t stream_pixel_ = ~uint64_t(0);
+    uint32_t stream_next_index_ = 0;
 };
 
 /// Kensler's hash-based permutation: element `i` of a pseudo-random permutation of

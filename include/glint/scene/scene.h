@@ -99,7 +99,7 @@ public:
     [[nodiscard]] const std::vector<const Light*>& all_lights() const { return all_lights_; }
     /// The area light that object `object` is, if any (valid after prepare()).
     [[nodiscard]] const AreaLight* area_light_of(uint32_t object) const {
-        const int32_t i = objects_[object].area_light;
+        const int32_t i = object_lights_[object];
         return i < 0 ? nullptr : area_lights_[std::size_t(i)].get();
     }
     /// True if the scene has a light or an object that emits (before or after prepare()).
@@ -147,6 +147,9 @@ private:
     std::vector<SceneObject> objects_;
     std::vector<std::unique_ptr<AreaLight>> area_lights_;
     std::vector<const Light*> all_lights_;
+    /// Per object, its area light's index or −1: a compact copy of SceneObject::area_light
+    /// for the lookup at every hit (a SceneObject is a few hundred bytes).
+    std::vector<int32_t> object_lights_;
     /// Per object: is its material a dielectric (derived in prepare(), for shadow rays).
     std::vector<uint8_t> dielectric_;
     Bvh top_level_;
