@@ -28,7 +28,7 @@ int run_info(const std::string& path, const SceneOptions& opt) {
     const SceneStatistics stats = scene.statistics();
 
     std::map<std::string, int> light_kinds;
-    for (const auto& light : scene.lights()) ++light_kinds[std::string(light->type_name())];
+    for (const Light* light : scene.all_lights()) ++light_kinds[std::string(light->type_name())];
     std::string lights;
     for (const auto& [kind, count] : light_kinds) lights += fmt::format("{}{} {}", lights.empty() ? "" : ", ", count, kind);
 
@@ -37,7 +37,7 @@ int run_info(const std::string& path, const SceneOptions& opt) {
     fmt::print("triangles:   {} unique, {} instanced\n", stats.unique_triangles, stats.instanced_triangles);
     fmt::print("materials:   {}\n", scene.materials().size());
     fmt::print("textures:    {}\n", scene.texture_count());
-    fmt::print("lights:      {}{}{}\n", scene.lights().size(), lights.empty() ? "" : ": ", lights);
+    fmt::print("lights:      {}{}{}\n", scene.all_lights().size(), lights.empty() ? "" : ": ", lights);
     if (source.gltf) {
         const GltfReport& r = *source.gltf;
         fmt::print("cameras:     {} in the file\n", r.cameras.size());

@@ -67,6 +67,7 @@ TOML
   fail "path render failed: $(cat err.txt)"
 [ -s path.png ] || fail "path render wrote no image"
 [ "$(grep -c 'ignores \[world\] ambient_light' err.txt)" -eq 1 ] || fail "path: no single ambient warning: $(cat err.txt)"
+"$glint" info lit.toml | grep -q "lights: *1: 1 area" || fail "info does not count the area light: $("$glint" info lit.toml)"
 if "$glint" render lit.toml -o unknown.png --integrator pathtracer -q 2>err.txt; then fail "unknown integrator accepted"; fi
 grep -q "whitted" err.txt || fail "unknown integrator error does not list the known ones: $(cat err.txt)"
 [ -e unknown.png ] && fail "unknown integrator left a file"
