@@ -60,10 +60,8 @@ int run_render(const RenderOptions& opt) {
     if (opt.threads) s.threads = *opt.threads;
     if (opt.seed) s.seed = *opt.seed;
     if (opt.filter) {
-        for (glint::PixelFilter f : {glint::PixelFilter::Box, glint::PixelFilter::Tent, glint::PixelFilter::Gaussian,
-                                     glint::PixelFilter::Mitchell})
-            if (glint::filter_name(f) == *opt.filter) s.filter = f;
-        s.filter_radius = 0.0f;  // a filter named here takes its own default radius
+        s.filter = *glint::filter_from_name(*opt.filter);  // CLI11 checked the name
+        s.filter_radius = 0.0f;                             // a filter named here takes its own default radius
     }
     if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
     if (opt.integrator) s.integrator = *opt.integrator;
@@ -122,8 +120,8 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--depth", render.depth, "Maximum reflection/refraction depth");
     render_cmd->add_option("--threads", render.threads, "Worker threads (0 = all cores)");
     render_cmd->add_option("--seed", render.seed, "Random seed");
-    render_cmd->add_option("--filter", render.filter, "Pixel filter")
-        ->check(CLI::IsMember({"box", "tent", "gaussian", "mitchell"}));
+    const std::vector<std::string> filter_names(glint::filter_names().begin(), glint::filter_names().end());
+    render_cmd->add_option("--filter", render.filter, "Pixel filter")->check(CLI::IsMember(filter_names));
     render_cmd->add_option("--filter-radius", render.filter_radius, "Pixel filter radius in pixels (default: the filter's)")
         ->check(CLI::Range(0.001f, 16.0f));
     std::vector<std::string> integrator_names;

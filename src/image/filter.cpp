@@ -32,14 +32,21 @@ float Filter::default_radius(PixelFilter kind) {
     return 0.5f;
 }
 
-std::string_view filter_name(PixelFilter kind) {
-    switch (kind) {
-        case PixelFilter::Box: return "box";
-        case PixelFilter::Tent: return "tent";
-        case PixelFilter::Gaussian: return "gaussian";
-        case PixelFilter::Mitchell: return "mitchell";
-    }
-    return "box";
+namespace {
+
+/// Indexed by PixelFilter.
+constexpr std::array<std::string_view, 4> kFilterNames{"box", "tent", "gaussian", "mitchell"};
+
+}  // namespace
+
+std::string_view filter_name(PixelFilter kind) { return kFilterNames[std::size_t(kind)]; }
+
+std::span<const std::string_view> filter_names() { return kFilterNames; }
+
+std::optional<PixelFilter> filter_from_name(std::string_view name) {
+    for (std::size_t i = 0; i < kFilterNames.size(); ++i)
+        if (kFilterNames[i] == name) return PixelFilter(i);
+    return std::nullopt;
 }
 
 Filter::Filter(PixelFilter kind, float radius) : kind_(kind), radius_(radius == 0.0f ? default_radius(kind) : radius) {

@@ -33,7 +33,9 @@ ShadingPoint shading_point(const Scene& scene, const SurfaceInteraction& si, con
 }
 
 Color diffuse_texture(const Material& m, const SurfaceInteraction& si) {
-    return m.texture ? m.texture->evaluate(si.uv, si.p) : Color(1.0f);
+    // A fully transparent material has no diffuse lobe for the texture to tint: skip the lookup.
+    if (!m.texture || m.transparency >= 1.0f) return Color(1.0f);
+    return m.texture->evaluate(si.uv, si.p);
 }
 
 }  // namespace glint

@@ -198,7 +198,9 @@ std::shared_ptr<Shape> heightfield(const ParamTable& t) {
     return std::make_shared<Heightfield>(uint32_t(nx), uint32_t(nz), std::move(heights), lo, hi);
 }
 
-std::shared_ptr<Shape> simple_shape(const ParamTable& t, const std::string& type) {
+}  // namespace
+
+std::shared_ptr<Shape> read_simple_shape(const ParamTable& t, const std::string& type, const Vec3& disk_normal) {
     if (type == "sphere") {
         const Vec3 center = t.vec3("center", Vec3(0.0f));
         const float radius = t.require_number("radius");
@@ -207,7 +209,8 @@ std::shared_ptr<Shape> simple_shape(const ParamTable& t, const std::string& type
     }
     if (type == "quad") {
         const Vec3 corner = t.require_vec3("corner"), u = t.require_vec3("edge_u"), v = t.require_vec3("edge_v");
-        if (!(length(cross(u, v)) > 0.0f)) t.fail("edge_v", "an edge that is non-zero and not parallel to edge_u");
+        if (!(length(cross(u, v)) > 0.0f))
+            t.fail("edge_v", "an edge that is non-zero and not parallel to edge_u (a quad of positive area)");
         return std::make_shared<Quad>(corner, u, v);
     }
     if (type == "plane") {
@@ -221,7 +224,7 @@ std::shared_ptr<Shape> simple_shape(const ParamTable& t, const std::string& type
         return std::make_shared<Quad>(center - u * 0.5f - v * 0.5f, u, v);
     }
     if (type == "disk") {
-        const Vec3 normal = t.vec3("normal", Vec3(0.0f, 1.0f, 0.0f));
+        const Vec3 normal = t.vec3("normal", disk_normal);
         if (!(length(normal) > 0.0f)) t.fail("normal", "a non-zero direction the disk faces");
         const float radius = t.require_number("radius");
         if (!(radius > 0.0f)) t.fail("radius", "a positive radius");
@@ -235,10 +238,12 @@ std::shared_ptr<Shape> simple_shape(const ParamTable& t, const std::string& type
     return heightfield(t);
 }
 
+namespace {
+
 BuiltShape build_shape(const ParamTable& t, const std::string& type, const Scene& scene) {
     if (type == "triangle") return triangle(t, scene);
     if (type == "mesh") return inline_mesh(t, scene);
-    return {simple_shape(t, type), false, 0};
+    return {read_simple_shape(t, type), false, 0};
 }
 
 void import_file(const ParamTable& t, const std::filesystem::path& base_dir, const std::optional<Transform>& transform,

@@ -1,8 +1,6 @@
 #include "glint/io/scene_builder.h"
 
-#include "glint/geometry/disk.h"
-#include "glint/geometry/quad.h"
-#include "glint/geometry/sphere.h"
+#include "glint/image/filter.h"
 #include "glint/image/image_io.h"
 #include "glint/integrators/integrator_registry.h"
 #include "glint/io/transform_params.h"
@@ -21,7 +19,6 @@ namespace glint {
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kFilters{"box", "tent", "gaussian", "mitchell"};
 constexpr std::array<std::string_view, 2> kMisHeuristics{"balance", "power"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 constexpr std::array<std::string_view, 3> kBackgrounds{"color", "spheremap", "equirect"};
@@ -64,13 +61,6 @@ struct Builder {
     }
 };
 
-PixelFilter parse_filter(std::string_view name) {
-    if (name == "tent") return PixelFilter::Tent;
-    if (name == "gaussian") return PixelFilter::Gaussian;
-    if (name == "mitchell") return PixelFilter::Mitchell;
-    return PixelFilter::Box;
-}
-
 /// An integer from `min` to `max`.
 uint32_t count(const ParamTable& t, std::string_view key, int64_t fallback, int64_t min, int64_t max) {
     const int64_t n = t.integer(key, fallback);
@@ -90,7 +80,7 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     const int64_t seed = t.integer("seed", 0);
     if (seed < 0) t.fail("seed", "a non-negative integer");
     s.seed = static_cast<uint64_t>(seed);
-    s.filter = parse_filter(t.choice("filter", kFilters, "box"));
+    s.filter = *filter_from_name(t.choice("filter", filter_names(), "box"));
     if (t.find("filter_radius")) {
         s.filter_radius = t.number("filter_radius", 0.0f);
         if (!(s.filter_radius > 0.0f && s.filter_radius <= 16.0f))
@@ -243,30 +233,12 @@ Color emission(const ParamTable& t, std::string_view key) {
     return c;
 }
 
-float positive(const ParamTable& t, std::string_view key, std::string_view what) {
-    const float x = t.require_number(key);
-    if (!(x > 0.0f)) t.fail(key, what);
-    return x;
-}
-
 /// `[[lights]]` of type sphere, quad or disk: a shape that emits `radiance` (nits).
 void read_area_light(const ParamTable& t, const std::string& type, Builder& b) {
     const Color radiance = emission(t, "radiance");
-    std::shared_ptr<Shape> shape;
-    bool two_sided = false;
-    if (type == "sphere") {
-        shape = std::make_shared<Sphere>(t.vec3("center", Vec3(0.0f)), positive(t, "radius", "a positive radius"));
-    } else if (type == "quad") {
-        const Vec3 corner = t.require_vec3("corner"), u = t.require_vec3("edge_u"), v = t.require_vec3("edge_v");
-        if (!(length(cross(u, v)) > 0.0f)) t.fail("edge_v", "an edge that is non-zero and not parallel to edge_u (a quad of positive area)");
-        shape = std::make_shared<Quad>(corner, u, v);
-        two_sided = t.boolean("two_sided", false);
-    } else {
-        const Vec3 normal = t.vec3("normal", Vec3(0.0f, -1.0f, 0.0f));
-        if (!(length(normal) > 0.0f)) t.fail("normal", "a non-zero direction the disk faces");
-        shape = std::make_shared<Disk>(t.vec3("center", Vec3(0.0f)), normal, positive(t, "radius", "a positive radius"));
-        two_sided = t.boolean("two_sided", false);
-    }
+    // A lamp disk faces down unless told otherwise; spheres are closed and emit outwards.
+    std::shared_ptr<Shape> shape = read_simple_shape(t, type, Vec3(0.0f, -1.0f, 0.0f));
+    const bool two_sided = type != "sphere" && t.boolean("two_sided", false);
     std::optional<Transform> transform;
     if (const ParamValue* v = t.find("transform")) transform = read_transform(*v, t.name_of("transform"));
     const std::string name = t.string("name", "");

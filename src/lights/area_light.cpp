@@ -74,11 +74,7 @@ LightSample AreaLight::sample(const Vec3& point, Vec2 u) const {
         if (!s) return ls;
         p = world_from_object_->point(s->p);
         n = normalize(world_from_object_->normal(s->n));
-        const Vec3 d = p - point;
-        const float dist2 = dot(d, d);
-        const float cos_light = std::abs(dot(n, d)) / std::sqrt(dist2);
-        if (cos_light == 0.0f) return ls;
-        pdf = area_pdf(n) * dist2 / cos_light;
+        pdf = this->pdf(point, p, n);
     }
     const Vec3 d = p - point;
     const float dist = length(d);

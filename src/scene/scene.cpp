@@ -43,12 +43,12 @@ uint32_t Scene::add_area_light(std::shared_ptr<Shape> shape, const Emitter& emit
     return object;
 }
 
+bool Scene::lights_scene(const SceneObject& o) const {
+    return o.emitter || (emission_lights && o.material < materials_.size() && !materials_[o.material].emission.is_black());
+}
+
 bool Scene::has_emitters() const {
-    if (!lights_.empty()) return true;
-    for (const SceneObject& o : objects_)
-        if (o.emitter || (emission_lights && o.material < materials_.size() && !materials_[o.material].emission.is_black()))
-            return true;
-    return false;
+    return !lights_.empty() || std::any_of(objects_.begin(), objects_.end(), [&](const SceneObject& o) { return lights_scene(o); });
 }
 
 void Scene::build_area_lights() {
@@ -57,18 +57,17 @@ void Scene::build_area_lights() {
         o.area_light = -1;
         const std::optional<Transform> transform =
             o.has_transform ? std::optional<Transform>(o.world_from_object) : std::nullopt;
+        if (!lights_scene(o)) continue;
         if (o.emitter) {
             area_lights_.push_back(
                 std::make_unique<AreaLight>(o.shape, transform, o.emitter->radiance, nullptr, o.emitter->two_sided));
-        } else if (emission_lights && o.material < materials_.size() && !materials_[o.material].emission.is_black()) {
+        } else {
             o.shape->prepare_sampling();
             // A shape without area (a heightfield) keeps its emission visible only.
             if (!(o.shape->area() > 0.0f)) continue;
             const Material& m = materials_[o.material];
             // Glint's surfaces are two-sided, and so is what they emit.
             area_lights_.push_back(std::make_unique<AreaLight>(o.shape, transform, m.emission, m.emission_texture, true));
-        } else {
-            continue;
         }
         o.area_light = int32_t(area_lights_.size() - 1);
     }

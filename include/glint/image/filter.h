@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string_view>
 
 namespace glint {
@@ -64,5 +66,9 @@ private:
 
 /// The filter's name as in scene files and on the command line ("box", "tent", ...).
 [[nodiscard]] std::string_view filter_name(PixelFilter kind);
+/// Every filter's name, in PixelFilter order: the choices of `filter` and `--filter`.
+[[nodiscard]] std::span<const std::string_view> filter_names();
+/// The filter called `name`, if there is one.
+[[nodiscard]] std::optional<PixelFilter> filter_from_name(std::string_view name);
 
 }  // namespace glint

@@ -39,7 +39,8 @@ struct ShadingPoint {
 [[nodiscard]] ShadingPoint shading_point(const Scene& scene, const SurfaceInteraction& si, const Ray& ray,
                                          const IorStack& media);
 
-/// Texture colour multiplying kd at the hit (white without a texture).
+/// Texture colour multiplying kd at the hit (white without a texture, or for a fully
+/// transparent material, whose diffuse and ambient terms have weight 0).
 [[nodiscard]] Color diffuse_texture(const Material& m, const SurfaceInteraction& si);
 
 /// The shadow ray from a surface point (geometric normal `ng` on the side the light is) to a

@@ -139,6 +139,9 @@ public:
 private:
     bool intersect_object(uint32_t object, Ray& ray, Hit& hit) const;
     bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode) const;
+    /// Does `o` emit light into the scene: a declared area light, or (with emission_lights)
+    /// an object whose material has an emission.
+    [[nodiscard]] bool lights_scene(const SceneObject& o) const;
     void build_area_lights();
 
     std::vector<Material> materials_;
