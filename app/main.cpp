@@ -8,7 +8,7 @@
 #include "glint/image/image_io.h"
 #include "glint/image/filter.h"
 #include "glint/integrators/integrator_registry.h"
-#include "glint/io/scene_file.h"
+#include "glint/scene_file.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

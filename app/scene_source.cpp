@@ -1,43 +1,22 @@
 #include "scene_source.h"
 
-#include "glint/io/environment.h"
+#include "glint/scene/environment.h"
 #include "glint/scene/default_scene.h"
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <stdexcept>
 
 namespace glint::app {
 
-namespace {
-
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
-}  // namespace
-
 SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
     SceneSource source;
-    const std::string ext = lower_extension(path);
     if (path.empty()) {
+        if (!opt.camera.empty())
+            throw std::invalid_argument("--camera picks a camera of a glTF file; the built-in scene is not one");
         source.loaded.scene = make_spheres_scene();
         source.loaded.settings.samples_per_axis = 2;
-    } else if (ext == ".gltf" || ext == ".glb") {
-        GltfScene gltf = load_gltf_scene(path, GltfOptions{opt.camera});
-        source.loaded = std::move(gltf.loaded);
-        source.default_lighting = gltf.report.default_lighting;
-        source.gltf = std::move(gltf.report);
     } else {
-        source.loaded = load_scene_file(path);
-        source.default_lighting = ext != ".toml";  // bare mesh files get the default lighting
+        source = load_scene_file(path, SceneFileOptions{opt.camera});
     }
-    if (!opt.camera.empty() && !source.gltf)
-        throw std::invalid_argument("--camera picks a camera of a glTF file; " +
-                                    (path.empty() ? std::string("the built-in scene") : path) + " is not one");
     if (!opt.env.empty()) {
         EnvironmentOptions env;
         if (!opt.env_kind.empty()) env.kind = parse_environment_kind(opt.env_kind);

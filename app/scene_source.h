@@ -2,12 +2,10 @@
 // Loading the scene a command names: scene files, glTF with a chosen camera, and the
 // environment flags shared by `glint render` and `glint info`.
 
-#include "glint/io/gltf_scene_loader.h"
-#include "glint/io/scene_file.h"
+#include "glint/scene_file.h"
 
 #include <CLI/CLI.hpp>
 
-#include <optional>
 #include <string>
 
 namespace glint::app {
@@ -21,13 +19,8 @@ struct SceneOptions {
     float env_intensity = 1.0f;
 };
 
-/// A loaded scene and, for glTF files, what the loader mapped.
-struct SceneSource {
-    LoadedScene loaded;
-    std::optional<GltfReport> gltf;
-    /// The scene is lit by the asset default lighting (no lights in the file).
-    bool default_lighting = false;
-};
+/// What `render` and `info` load: a scene file, or the built-in scene.
+using SceneSource = SceneFile;
 
 /// Load `path` (the built-in spheres scene when empty) and apply the camera and environment
 /// options. Throws SceneError, ImageError or std::invalid_argument.

@@ -6,7 +6,7 @@
 #include "bench_rays.h"
 #include "embree_scene.h"
 
-#include "glint/io/mesh_loader.h"
+#include "glint/assets/mesh_loader.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

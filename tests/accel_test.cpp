@@ -6,7 +6,7 @@
 #include "glint/accel/bvh.h"
 #include "glint/accel/triangle_bvh.h"
 #include "glint/geometry/triangle_mesh.h"
-#include "glint/io/mesh_loader.h"
+#include "glint/assets/mesh_loader.h"
 #include "glint/scene/scene.h"
 
 #include <gtest/gtest.h>

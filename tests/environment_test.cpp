@@ -3,7 +3,7 @@
 // and the shared HDR files load and agree with each other.
 
 #include "glint/image/image_io.h"
-#include "glint/io/environment.h"
+#include "glint/scene/environment.h"
 #include "glint/scene/background.h"
 
 #include <gtest/gtest.h>

@@ -4,8 +4,9 @@
 
 #include "gltf_test_files.h"
 
-#include "glint/io/gltf_scene_loader.h"
-#include "glint/io/mesh_loader.h"
+#include "glint/diagnostics.h"
+#include "glint/assets/gltf_scene_loader.h"
+#include "glint/assets/mesh_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -258,9 +259,10 @@ TEST(GltfErrors, ImportIntoASceneSharesTheChecks) {
     const std::string glb = glint_test::make_glb(glint_test::quad_json(""), glint_test::quad_buffer());
     glint_test::write_file(dir / "cut.glb", glb.substr(0, glb.size() - 8));
     glint::Scene scene;
-    EXPECT_THROW(glint::import_mesh_file(scene, dir / "cut.glb", glint::Transform(), std::nullopt), glint::SceneError);
+    glint::MeshCache cache;
+    EXPECT_THROW(glint::import_mesh_file(scene, dir / "cut.glb", glint::Transform(), std::nullopt, cache), glint::SceneError);
     glint_test::write_file(dir / "good.glb", glb);
-    const auto result = glint::import_mesh_file(scene, dir / "good.glb", glint::Transform(), std::nullopt);
+    const auto result = glint::import_mesh_file(scene, dir / "good.glb", glint::Transform(), std::nullopt, cache);
     EXPECT_EQ(result.triangles, 2u);
     EXPECT_EQ(scene.material(scene.objects()[0].material).name, "white");
 }

@@ -4,7 +4,7 @@
 #include "gltf_test_files.h"
 
 #include "glint/geometry/triangle_mesh.h"
-#include "glint/io/gltf_scene_loader.h"
+#include "glint/assets/gltf_scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,10 @@
 // here independently, without Glint's reader), the camera against its node, and a tiny
 // render that must be finite and not blank.
 
+#include "glint/diagnostics.h"
 #include "glint/image/film.h"
 #include "glint/integrators/whitted_integrator.h"
-#include "glint/io/gltf_scene_loader.h"
+#include "glint/assets/gltf_scene_loader.h"
 #include "glint/math/constants.h"
 
 #include <gtest/gtest.h>

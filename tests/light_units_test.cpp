@@ -5,7 +5,7 @@
 
 #include "glint/image/film.h"
 #include "glint/integrators/whitted_integrator.h"
-#include "glint/io/gltf_scene_loader.h"
+#include "glint/assets/gltf_scene_loader.h"
 #include "glint/lights/light.h"
 #include "glint/math/constants.h"
 

@@ -3,7 +3,7 @@
 
 #include "glint/image/film.h"
 #include "glint/integrators/whitted_integrator.h"
-#include "glint/io/scene_file.h"
+#include "glint/scene_file.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@ TEST(MeshScenes, StanfordMeshesRenderFinite) {
     const std::filesystem::path dir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
     if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes at " << dir;
     for (const char* name : {"stanford_bunny.ply", "stanford_lucy_100k.ply", "stanford_dragon_res2.ply", "stanford_dragon.ply"}) {
-        glint::LoadedScene loaded = glint::load_scene_file(dir / name);
+        glint::LoadedScene loaded = glint::load_scene_file(dir / name).loaded;
         loaded.scene.prepare();
         glint::RenderSettings settings;
         settings.width = 24;

@@ -3,8 +3,8 @@
 
 #include "gltf_test_files.h"
 
-#include "glint/io/mesh_loader.h"
-#include "glint/io/scene_file.h"
+#include "glint/assets/mesh_loader.h"
+#include "glint/scene_file.h"
 
 #include <gtest/gtest.h>
 
@@ -50,8 +50,8 @@ TEST(MeshLoader, DragonTwiceAsInstancesSharesOneMesh) {
     glint::Scene scene;
     glint::MeshCache cache;
     const auto start = std::chrono::steady_clock::now();
-    const auto first = glint::import_mesh_file(scene, path, glint::Transform(), std::nullopt, &cache);
-    const auto second = glint::import_mesh_file(scene, path, glint::Transform::translate({0.3f, 0, 0}), std::nullopt, &cache);
+    const auto first = glint::import_mesh_file(scene, path, glint::Transform(), std::nullopt, cache);
+    const auto second = glint::import_mesh_file(scene, path, glint::Transform::translate({0.3f, 0, 0}), std::nullopt, cache);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "stanford_dragon.ply imported twice in " << seconds << " s\n";
     EXPECT_FALSE(first.reused);
@@ -65,17 +65,19 @@ TEST(MeshLoader, DragonTwiceAsInstancesSharesOneMesh) {
     EXPECT_EQ(scene.statistics().instanced_triangles, 2u * 871414u);
 }
 
-TEST(MeshLoader, WithoutACacheTheSceneStillReadsAFileOnce) {
+TEST(MeshLoader, EachSceneWithItsOwnCacheReadsAFileOnce) {
     const fs::path dir = glint_test::temp_dir();
     glint_test::write_file(dir / "tri.ply", ascii_ply({"0 0 0", "1 0 0", "0 1 0"}, {"3 0 1 2"}));
     glint::Scene scene;
-    const auto a = glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), std::nullopt);
-    const auto b = glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform::translate({2, 0, 0}), std::nullopt);
+    glint::MeshCache cache;
+    const auto a = glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), std::nullopt, cache);
+    const auto b = glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform::translate({2, 0, 0}), std::nullopt, cache);
     EXPECT_FALSE(a.reused);
     EXPECT_TRUE(b.reused);
     EXPECT_EQ(scene.objects()[0].shape, scene.objects()[1].shape);
-    glint::Scene other;  // a different scene reads it again and gets its own materials
-    const auto c = glint::import_mesh_file(other, dir / "tri.ply", glint::Transform(), std::nullopt);
+    glint::Scene other;  // a different scene, with its own cache, reads it again and gets its own materials
+    glint::MeshCache other_cache;
+    const auto c = glint::import_mesh_file(other, dir / "tri.ply", glint::Transform(), std::nullopt, other_cache);
     EXPECT_FALSE(c.reused);
     EXPECT_EQ(other.materials().size(), 1u);
 }
@@ -87,12 +89,12 @@ TEST(MeshLoader, CacheDoesNotKeepADeadScenesMeshes) {
     std::weak_ptr<glint::Shape> mesh;
     {
         glint::Scene scene;
-        glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), std::nullopt, &cache);
+        glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), std::nullopt, cache);
         mesh = scene.objects()[0].shape;
     }
     EXPECT_TRUE(mesh.expired()) << "the scene owns the geometry, not the cache";
     glint::Scene next;
-    EXPECT_FALSE(glint::import_mesh_file(next, dir / "tri.ply", glint::Transform(), std::nullopt, &cache).reused);
+    EXPECT_FALSE(glint::import_mesh_file(next, dir / "tri.ply", glint::Transform(), std::nullopt, cache).reused);
     EXPECT_EQ(next.materials().size(), 1u);
 }
 
@@ -104,10 +106,10 @@ TEST(MeshLoader, OverrideMaterialIsUsedAndValidated) {
     gold.name = "gold";
     const uint32_t id = scene.add_material(gold);
     glint::MeshCache cache;
-    glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), id, &cache);
+    glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), id, cache);
     EXPECT_EQ(scene.objects()[0].material, id);
     EXPECT_EQ(scene.materials().size(), 1u) << "the file's own material is not added";
-    EXPECT_THROW(glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), 7u, &cache), glint::SceneError);
+    EXPECT_THROW(glint::import_mesh_file(scene, dir / "tri.ply", glint::Transform(), 7u, cache), glint::SceneError);
 }
 
 TEST(MeshLoader, ObjWithMtlGetsItsMaterialAndTexture) {
@@ -116,7 +118,8 @@ TEST(MeshLoader, ObjWithMtlGetsItsMaterialAndTexture) {
                                              "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl red\nf 1/1 2/2 3/3 4/4\n");
     glint_test::write_file(dir / "quad.mtl", "newmtl red\nKd 0.8 0.1 0.1\nKs 0.2 0.2 0.2\nNs 50\nmap_Kd missing.png\n");
     glint::Scene scene;
-    const auto result = glint::import_mesh_file(scene, dir / "quad.obj", glint::Transform(), std::nullopt);
+    glint::MeshCache cache;
+    const auto result = glint::import_mesh_file(scene, dir / "quad.obj", glint::Transform(), std::nullopt, cache);
     EXPECT_EQ(result.triangles, 2u);
     const auto red = scene.find_material("red");
     ASSERT_TRUE(red);
@@ -132,9 +135,10 @@ TEST(MeshLoader, GltfImportKeepsInstancingAndMaterials) {
     const fs::path spheres = gltf / "MetalRoughSpheresNoTextures/glTF-Binary/MetalRoughSpheresNoTextures.glb";
     if (!fs::exists(instancing) || !fs::exists(spheres)) GTEST_SKIP() << "no shared glTF samples";
     glint::Scene scene;
-    const auto boxes = glint::import_mesh_file(scene, instancing, glint::Transform(), std::nullopt);
+    glint::MeshCache cache;
+    const auto boxes = glint::import_mesh_file(scene, instancing, glint::Transform(), std::nullopt, cache);
     EXPECT_EQ(boxes.objects, 125u) << "EXT_mesh_gpu_instancing: one object per instance";
-    const auto balls = glint::import_mesh_file(scene, spheres, glint::Transform::scale(glint::Vec3(10.0f)), std::nullopt);
+    const auto balls = glint::import_mesh_file(scene, spheres, glint::Transform::scale(glint::Vec3(10.0f)), std::nullopt, cache);
     EXPECT_GT(balls.objects, 98u);
     bool metal = false;
     for (const auto& m : scene.materials()) metal = metal || (m.fresnel_mirror && m.diffuse.is_black());
@@ -145,7 +149,8 @@ TEST(MeshLoaderErrors, NanVerticesAreDroppedWithAWarning) {
     const fs::path dir = glint_test::temp_dir();
     glint_test::write_file(dir / "nan.ply", ascii_ply({"0 0 0", "1 0 0", "0 1 0", "nan 0 0"}, {"3 0 1 2", "3 0 1 3"}));
     glint::Scene scene;
-    const auto result = glint::import_mesh_file(scene, dir / "nan.ply", glint::Transform(), std::nullopt);
+    glint::MeshCache cache;
+    const auto result = glint::import_mesh_file(scene, dir / "nan.ply", glint::Transform(), std::nullopt, cache);
     EXPECT_EQ(result.triangles, 1u);
     ASSERT_FALSE(result.warnings.empty());
     EXPECT_NE(result.warnings.front().find("nan.ply"), std::string::npos);
@@ -159,8 +164,9 @@ TEST(MeshLoaderErrors, OutOfRangeIndicesNameTheFile) {
     const fs::path dir = glint_test::temp_dir();
     glint_test::write_file(dir / "range.ply", ascii_ply({"0 0 0", "1 0 0", "0 1 0"}, {"3 0 1 2", "3 0 1 99"}));
     glint::Scene scene;
+    glint::MeshCache cache;
     try {
-        const auto result = glint::import_mesh_file(scene, dir / "range.ply", glint::Transform(), std::nullopt);
+        const auto result = glint::import_mesh_file(scene, dir / "range.ply", glint::Transform(), std::nullopt, cache);
         // Accepted: the bad triangle must be gone and reported.
         EXPECT_EQ(result.triangles, 1u);
         ASSERT_FALSE(result.warnings.empty());
@@ -177,8 +183,9 @@ TEST(MeshLoaderErrors, EmptyMeshIsAnErrorNamingTheFile) {
     glint_test::write_file(dir / "empty.obj", "# nothing here\n");
     for (const char* name : {"empty.ply", "empty.obj"}) {
         glint::Scene scene;
+    glint::MeshCache cache;
         try {
-            glint::import_mesh_file(scene, dir / name, glint::Transform(), std::nullopt);
+            glint::import_mesh_file(scene, dir / name, glint::Transform(), std::nullopt, cache);
             ADD_FAILURE() << name << " was accepted";
         } catch (const glint::SceneError& e) {
             EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
@@ -191,8 +198,9 @@ TEST(MeshLoaderErrors, MissingAndUnknownFilesAreErrors) {
     const fs::path dir = glint_test::temp_dir();
     glint_test::write_file(dir / "garbage.ply", "this is not a ply file\n");
     glint::Scene scene;
-    EXPECT_THROW(glint::import_mesh_file(scene, dir / "absent.obj", glint::Transform(), std::nullopt), glint::SceneError);
-    EXPECT_THROW(glint::import_mesh_file(scene, dir / "garbage.ply", glint::Transform(), std::nullopt), glint::SceneError);
+    glint::MeshCache cache;
+    EXPECT_THROW(glint::import_mesh_file(scene, dir / "absent.obj", glint::Transform(), std::nullopt, cache), glint::SceneError);
+    EXPECT_THROW(glint::import_mesh_file(scene, dir / "garbage.ply", glint::Transform(), std::nullopt, cache), glint::SceneError);
     EXPECT_THROW((void)glint::load_scene_file(dir / "scene.xyz"), glint::SceneError);
 }
 

@@ -15,7 +15,7 @@
 
 #include "glint/image/image_io.h"
 #include "glint/integrators/integrator_registry.h"
-#include "glint/io/toml_scene_loader.h"
+#include "glint/scene_format/toml_scene_loader.h"
 #include "glint/scene/default_scene.h"
 
 #include <gtest/gtest.h>

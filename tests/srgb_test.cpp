@@ -3,7 +3,7 @@
 #include "gltf_test_files.h"
 
 #include "glint/image/image_io.h"
-#include "glint/io/gltf_scene_loader.h"
+#include "glint/assets/gltf_scene_loader.h"
 #include "glint/math/color.h"
 
 #include <gtest/gtest.h>

@@ -4,9 +4,9 @@
 #include "glint/geometry/heightfield.h"
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/triangle_mesh.h"
-#include "glint/io/did_you_mean.h"
-#include "glint/io/source_excerpt.h"
-#include "glint/io/toml_scene_loader.h"
+#include "glint/scene_format/did_you_mean.h"
+#include "glint/scene_format/source_excerpt.h"
+#include "glint/scene_format/toml_scene_loader.h"
 #include "toml_text.h"
 #include "glint/scene/default_scene.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Loading scene text in tests, and checking the SceneError a mistake gives.
 
-#include "glint/io/toml_scene_loader.h"
+#include "glint/scene_format/toml_scene_loader.h"
 
 #include <gtest/gtest.h>
 

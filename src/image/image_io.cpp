@@ -1,6 +1,7 @@
 #include "glint/image/image_io.h"
 
 #include "glint/math/color.h"
+#include "glint/util/file_extension.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -17,12 +18,6 @@
 namespace glint {
 
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 bool is_float_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
 
@@ -105,12 +100,12 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
 }
 
 bool is_supported_output(const std::filesystem::path& path) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lower_case_extension(path);
     return std::find(kOutputExtensions.begin(), kOutputExtensions.end(), ext) != kOutputExtensions.end();
 }
 
 void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lower_case_extension(path);
     if (!is_supported_output(path))
         throw ImageError(path.string() + ": unknown image extension '" + ext +
                          "' (expected .exr, .hdr, .pfm, .png, .jpg or .tif)");

@@ -1,6 +1,5 @@
-#include "glint/io/asset_defaults.h"
+#include "glint/scene/asset_defaults.h"
 
-#include "glint/io/mesh_loader.h"
 #include "glint/math/constants.h"
 
 #include <cmath>
@@ -34,18 +33,6 @@ void add_default_lighting(Scene& scene) {
     scene.add_light(std::make_unique<DirectionalLight>(travel, Color(kDefaultKeyLight)));
     scene.background = Background::constant(Color(kDefaultSky));
     scene.ambient_light = Color(kDefaultSky);
-}
-
-LoadedScene load_mesh_scene(const std::filesystem::path& path) {
-    LoadedScene loaded;
-    MeshCache cache;
-    MeshImportResult result = import_mesh_file(loaded.scene, path, Transform(), std::nullopt, &cache);
-    loaded.warnings = std::move(result.warnings);
-    loaded.settings.width = 640;
-    loaded.settings.height = 480;
-    loaded.scene.camera = framing_camera(object_bounds(loaded.scene), 640.0f / 480.0f);
-    add_default_lighting(loaded.scene);
-    return loaded;
 }
 
 }  // namespace glint

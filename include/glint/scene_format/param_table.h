@@ -8,7 +8,7 @@
 /// builder did ask for as suggestions (pbrt-v4's ReportUnused, mitsuba3's "unreferenced
 /// property").
 
-#include "glint/io/scene_file.h"
+#include "glint/diagnostics.h"
 #include "glint/math/color.h"
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
@@ -22,31 +22,6 @@
 #include <vector>
 
 namespace glint {
-
-/// Where something was written: file name, 1-based line and column (0 = unknown).
-struct SourceLocation {
-    std::shared_ptr<const std::string> file;
-    uint32_t line = 0;
-    uint32_t column = 0;
-
-    /// "file:line:column", or just "file" when the line is unknown.
-    [[nodiscard]] std::string to_string() const;
-};
-
-/// A SceneError that also keeps its location apart, so that the loader, which has the
-/// text, can show the offending line.
-class LocatedSceneError : public SceneError {
-public:
-    LocatedSceneError(SourceLocation where, const std::string& message)
-        : SceneError(where.to_string() + ": " + message), where_(std::move(where)) {}
-    [[nodiscard]] const SourceLocation& where() const { return where_; }
-
-private:
-    SourceLocation where_;
-};
-
-/// Throw LocatedSceneError: what() reads "file:line:column: message".
-[[noreturn]] void throw_scene_error(const SourceLocation& where, const std::string& message);
 
 class ParamTable;
 

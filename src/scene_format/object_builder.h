@@ -1,7 +1,8 @@
 #pragma once
 /// \file The `[[shapes]]` and `[[objects]]` sections: geometry placed in the scene.
 
-#include "glint/io/param_table.h"
+#include "glint/assets/mesh_loader.h"
+#include "glint/scene_format/param_table.h"
 #include "glint/scene/scene.h"
 
 #include <filesystem>
@@ -11,9 +12,9 @@
 namespace glint {
 
 /// Build the named shapes of `[[shapes]]`, then add every `[[objects]]` entry to `scene`
-/// (whose materials must already be there). Mesh files go through import_mesh_file; its
-/// warnings are appended to `warnings`. Throws SceneError at `file:line:column`.
-void add_objects(const ParamTable& root, const std::filesystem::path& base_dir, Scene& scene,
+/// (whose materials must already be there). Mesh files go through import_mesh_file with
+/// `meshes` (one read per file); its warnings are appended to `warnings`. Throws SceneError at `file:line:column`.
+void add_objects(const ParamTable& root, const std::filesystem::path& base_dir, Scene& scene, MeshCache& meshes,
                  std::vector<std::string>& warnings);
 
 /// The sphere, quad, plane, disk, box or heightfield that the keys of `t` describe (`type`

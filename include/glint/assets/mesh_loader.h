@@ -3,6 +3,7 @@
 
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/math/transform.h"
+#include "glint/scene/loaded_scene.h"
 #include "glint/scene/scene.h"
 
 #include <filesystem>
@@ -34,16 +35,16 @@ class MeshCache;
 /// of the file applied below it). With `override_material` every mesh uses that scene
 /// material; otherwise the file's materials are converted and added to the scene (glTF
 /// files through the same conversion as `glint render model.glb`, docs/assets.md).
-/// Without a `cache`, a cache private to `scene` is used, so repeated calls for one path
-/// within one scene read the file once either way. Throws SceneError naming the file and
+/// `cache` remembers the files read for this scene: repeated calls for one path read the
+/// file once and place its meshes again as instances. Throws SceneError naming the file and
 /// the problem; problems it can work around (bad triangles, a missing texture) become
 /// warnings in the result.
 MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
-                                  std::optional<uint32_t> override_material, MeshCache* cache = nullptr);
+                                  std::optional<uint32_t> override_material, MeshCache& cache);
 
 /// Files already read for one scene: each file is read once and its meshes (and, once
 /// converted, its materials) are shared by every later placement of the same path.
-/// Use one cache per Scene; it holds scene material indices. It holds the meshes weakly
+/// Use one cache per Scene (it holds scene material indices), owned by whoever loads it. It holds the meshes weakly
 /// (the scene owns them): an entry whose meshes all died is read again.
 class MeshCache {
 public:
@@ -54,14 +55,10 @@ public:
 
     /// Number of distinct files read (live or not).
     [[nodiscard]] std::size_t size() const { return entries_.size(); }
-    /// True if `scene` holds a mesh of this cache (the cache was filled for it).
-    [[nodiscard]] bool holds_meshes_of(const Scene& scene) const;
-    /// True if any mesh of this cache is still alive.
-    [[nodiscard]] bool alive() const;
 
 private:
     friend MeshImportResult import_mesh_file(Scene&, const std::filesystem::path&, const Transform&,
-                                             std::optional<uint32_t>, MeshCache*);
+                                             std::optional<uint32_t>, MeshCache&);
     struct Entry;  // one file's meshes and converted materials (mesh_loader.cpp)
     /// The live entry for `path` (canonical form), null if not read yet or stale.
     [[nodiscard]] Entry* find(const std::filesystem::path& path) const;
@@ -69,5 +66,9 @@ private:
 
     std::map<std::string, std::unique_ptr<Entry>> entries_;
 };
+
+/// A bare mesh file (PLY, OBJ, STL, FBX...) as a scene: its meshes and materials, a framing
+/// camera and the default lighting, 640×480. Throws SceneError.
+[[nodiscard]] LoadedScene load_mesh_scene(const std::filesystem::path& path);
 
 }  // namespace glint

@@ -1,7 +1,7 @@
 #pragma once
 /// \file The `transform` key of scene objects.
 
-#include "glint/io/param_table.h"
+#include "glint/scene_format/param_table.h"
 #include "glint/math/transform.h"
 
 namespace glint {

@@ -1,6 +1,6 @@
-#include "glint/io/param_table.h"
+#include "glint/scene_format/param_table.h"
 
-#include "glint/io/did_you_mean.h"
+#include "glint/scene_format/did_you_mean.h"
 
 #include <fmt/format.h>
 
@@ -20,15 +20,6 @@ std::string join(const std::vector<std::string>& words) {
 }
 
 }  // namespace
-
-std::string SourceLocation::to_string() const {
-    const std::string name = file ? *file : std::string("<scene>");
-    return line == 0 ? name : fmt::format("{}:{}:{}", name, line, column);
-}
-
-void throw_scene_error(const SourceLocation& where, const std::string& message) {
-    throw LocatedSceneError(where, message);
-}
 
 bool ParamValue::is_number() const {
     return std::holds_alternative<int64_t>(data_) || std::holds_alternative<double>(data_);

@@ -3,7 +3,7 @@
 /// hierarchy through assimp, cameras, KHR_lights_punctual and materials from the file's
 /// JSON. docs/assets.md lists what maps to what; docs/units.md the light units.
 
-#include "glint/io/scene_file.h"
+#include "glint/scene/loaded_scene.h"
 
 #include <filesystem>
 #include <string>

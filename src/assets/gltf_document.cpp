@@ -1,6 +1,6 @@
 #include "gltf_document.h"
 
-#include "glint/io/scene_file.h"
+#include "glint/diagnostics.h"
 
 #include <cctype>
 #include <cmath>

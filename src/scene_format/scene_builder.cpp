@@ -1,12 +1,12 @@
-#include "glint/io/scene_builder.h"
+#include "scene_builder.h"
 
 #include "glint/image/filter.h"
 #include "glint/image/image_io.h"
 #include "glint/integrators/integrator_registry.h"
-#include "glint/io/transform_params.h"
-#include "glint/io/did_you_mean.h"
-#include "glint/io/object_builder.h"
-#include "glint/io/uv_transform_texture.h"
+#include "transform_params.h"
+#include "glint/scene_format/did_you_mean.h"
+#include "object_builder.h"
+#include "glint/materials/uv_transform_texture.h"
 
 #include <fmt/format.h>
 
@@ -309,7 +309,8 @@ LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& bas
     for (const ParamTable* t : textures) read_texture(*t, b);
     for (const ParamTable* t : materials) read_material(*t, b);
     for (const ParamTable* t : lights) read_light(*t, b);
-    add_objects(root, base_dir, out.scene, out.warnings);
+    MeshCache meshes;
+    add_objects(root, base_dir, out.scene, meshes, out.warnings);
     // Every builder rejected its own unknown keys; this catches tables none of them visited.
     root.reject_unknown_keys_recursive();
     // Legal but most likely not what was meant: the render would show only the background.

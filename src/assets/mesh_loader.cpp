@@ -1,10 +1,12 @@
-#include "glint/io/mesh_loader.h"
+#include "glint/assets/mesh_loader.h"
 
 #include "gltf_document.h"
 #include "gltf_materials.h"
 #include "mesh_file.h"
 
-#include "glint/io/scene_file.h"
+#include "glint/diagnostics.h"
+#include "glint/scene/asset_defaults.h"
+#include "glint/util/file_extension.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -12,7 +14,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <mutex>
 
 namespace glint {
 
@@ -46,24 +47,10 @@ MeshCache::Entry& MeshCache::insert(const std::filesystem::path& path, std::uniq
     return *(entries_[path.string()] = std::move(entry));
 }
 
-bool MeshCache::holds_meshes_of(const Scene& scene) const {
-    for (const auto& [path, entry] : entries_)
-        for (const auto& weak : entry->meshes)
-            if (const auto mesh = weak.lock())
-                for (const SceneObject& o : scene.objects())
-                    if (o.shape == mesh) return true;
-    return false;
-}
-
-bool MeshCache::alive() const {
-    return std::any_of(entries_.begin(), entries_.end(), [](const auto& e) { return e.second->alive(); });
-}
-
 namespace {
 
 bool has_gltf_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lower_case_extension(path);
     return ext == ".gltf" || ext == ".glb";
 }
 
@@ -71,19 +58,6 @@ std::filesystem::path canonical_key(const std::filesystem::path& path) {
     std::error_code ec;
     const auto canonical = std::filesystem::weakly_canonical(path, ec);
     return ec ? path.lexically_normal() : canonical;
-}
-
-/// The caches used when the caller passes none, one per Scene address. An address can be
-/// reused after a scene dies (or is moved from), so a cache is trusted only while that scene
-/// still holds one of its meshes; caches whose meshes all died are dropped.
-std::mutex implicit_mutex;
-std::map<const Scene*, MeshCache> implicit_caches;
-
-MeshCache& implicit_cache(const Scene& scene) {
-    std::erase_if(implicit_caches, [&](const auto& slot) { return slot.first != &scene && !slot.second.alive(); });
-    MeshCache& cache = implicit_caches[&scene];
-    if (!cache.holds_meshes_of(scene)) cache = MeshCache{};
-    return cache;
 }
 
 /// Convert `file`'s materials into `scene`; returns the scene material of each file material.
@@ -151,14 +125,10 @@ MeshData load_mesh_data(const std::filesystem::path& path) {
 }
 
 MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& path, const Transform& world_from_file,
-                                  std::optional<uint32_t> override_material, MeshCache* cache) {
+                                  std::optional<uint32_t> override_material, MeshCache& files) {
     if (override_material && *override_material >= scene.materials().size())
         throw SceneError(path.string() + ": override material " + std::to_string(*override_material) +
                          " does not exist (the scene has " + std::to_string(scene.materials().size()) + ")");
-    // Loaders run one scene per thread at most, but two scenes may load at once.
-    std::unique_lock<std::mutex> implicit_lock(implicit_mutex, std::defer_lock);
-    if (!cache) implicit_lock.lock();
-    MeshCache& files = cache ? *cache : implicit_cache(scene);
     const std::filesystem::path key = canonical_key(path);
     MeshImportResult result;
     MeshCache::Entry* entry = files.find(key);
@@ -205,6 +175,18 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
         result.triangles += mesh->triangle_count();
     }
     return result;
+}
+
+LoadedScene load_mesh_scene(const std::filesystem::path& path) {
+    LoadedScene loaded;
+    MeshCache cache;
+    MeshImportResult result = import_mesh_file(loaded.scene, path, Transform(), std::nullopt, cache);
+    loaded.warnings = std::move(result.warnings);
+    loaded.settings.width = 640;
+    loaded.settings.height = 480;
+    loaded.scene.camera = framing_camera(object_bounds(loaded.scene), 640.0f / 480.0f);
+    add_default_lighting(loaded.scene);
+    return loaded;
 }
 
 }  // namespace glint

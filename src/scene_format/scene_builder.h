@@ -2,8 +2,8 @@
 /// \file From a parsed scene description (ParamTable tree) to a Scene and its render settings.
 /// Independent of the file syntax: the TOML front end produces the tree.
 
-#include "glint/io/param_table.h"
-#include "glint/io/scene_file.h"
+#include "glint/scene_format/param_table.h"
+#include "glint/scene_file.h"
 
 #include <filesystem>
 #include <string_view>

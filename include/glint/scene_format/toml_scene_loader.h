@@ -1,7 +1,7 @@
 #pragma once
 /// \file Glint's own scene format (TOML): docs/scene-format.md lists every key.
 
-#include "glint/io/scene_file.h"
+#include "glint/scene_file.h"
 
 #include <filesystem>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "glint/io/environment.h"
+#include "glint/scene/environment.h"
 
 #include "glint/image/image_io.h"
 #include "glint/math/constants.h"

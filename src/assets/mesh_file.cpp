@@ -1,10 +1,9 @@
 #include "mesh_file.h"
 
 #include "gltf_geometry.h"
-#include "glint/image/image_io.h"
 
+#include "glint/diagnostics.h"
 #include "glint/image/image_io.h"
-#include "glint/io/scene_file.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>

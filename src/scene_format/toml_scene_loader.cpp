@@ -1,11 +1,11 @@
 // The only translation unit that includes toml++ (it is heavy to compile): it turns TOML
 // text into a ParamTable tree and hands that to the scene builder.
 
-#include "glint/io/toml_scene_loader.h"
+#include "glint/scene_format/toml_scene_loader.h"
 
-#include "glint/io/param_table.h"
-#include "glint/io/scene_builder.h"
-#include "glint/io/source_excerpt.h"
+#include "glint/scene_format/param_table.h"
+#include "scene_builder.h"
+#include "glint/scene_format/source_excerpt.h"
 
 #include <toml++/toml.h>
 

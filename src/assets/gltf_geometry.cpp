@@ -1,6 +1,6 @@
 #include "gltf_geometry.h"
 
-#include "glint/io/scene_file.h"
+#include "glint/diagnostics.h"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 
 #include "glint/image/image_io.h"
 
-#include "glint/io/scene_file.h"
+#include "glint/diagnostics.h"
 
 #include <algorithm>
 #include <cmath>

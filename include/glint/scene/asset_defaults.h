@@ -2,10 +2,7 @@
 /// \file What an asset file that is rendered as a whole scene gets when it lacks a camera
 /// or lights (docs/assets.md, "Defaults").
 
-#include "glint/io/scene_file.h"
 #include "glint/scene/scene.h"
-
-#include <filesystem>
 
 namespace glint {
 
@@ -25,9 +22,5 @@ inline constexpr float kDefaultSky = 0.2f;
 /// camera's upper left, plus a uniform grey environment of radiance kDefaultSky that is both
 /// the background and the ambient light. Uses scene.camera, so set the camera first.
 void add_default_lighting(Scene& scene);
-
-/// A bare mesh file (PLY, OBJ, STL, FBX...) as a scene: its meshes and materials, a framing
-/// camera and the default lighting, 640×480. Throws SceneError.
-[[nodiscard]] LoadedScene load_mesh_scene(const std::filesystem::path& path);
 
 }  // namespace glint

@@ -1,4 +1,4 @@
-#include "glint/io/source_excerpt.h"
+#include "glint/scene_format/source_excerpt.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "glint/io/object_builder.h"
+#include "object_builder.h"
 
 #include "glint/geometry/box.h"
 #include "glint/geometry/disk.h"
@@ -6,10 +6,9 @@
 #include "glint/geometry/quad.h"
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/triangle_mesh.h"
-#include "glint/io/did_you_mean.h"
-#include "glint/io/mesh_loader.h"
-#include "glint/io/scene_builder.h"
-#include "glint/io/transform_params.h"
+#include "glint/scene_format/did_you_mean.h"
+#include "scene_builder.h"
+#include "transform_params.h"
 #include "glint/math/constants.h"
 
 #include <fmt/format.h>
@@ -247,7 +246,7 @@ BuiltShape build_shape(const ParamTable& t, const std::string& type, const Scene
 }
 
 void import_file(const ParamTable& t, const std::filesystem::path& base_dir, const std::optional<Transform>& transform,
-                 Scene& scene, std::vector<std::string>& warnings) {
+                 Scene& scene, MeshCache& meshes, std::vector<std::string>& warnings) {
     const std::filesystem::path path = resolve_input_file(t, "file", base_dir);
     std::optional<uint32_t> override_material;
     if (const ParamValue* m = t.find("material"))
@@ -255,7 +254,7 @@ void import_file(const ParamTable& t, const std::filesystem::path& base_dir, con
     t.reject_unknown_keys();
     try {
         const MeshImportResult result =
-            import_mesh_file(scene, path, transform.value_or(Transform()), override_material);
+            import_mesh_file(scene, path, transform.value_or(Transform()), override_material, meshes);
         for (const std::string& w : result.warnings) warnings.push_back(t.find("file")->where().to_string() + ": " + w);
     } catch (const std::exception& e) {
         // The importer names the file; add where the scene asked for it.
@@ -266,7 +265,7 @@ void import_file(const ParamTable& t, const std::filesystem::path& base_dir, con
 using ShapeLibrary = std::map<std::string, BuiltShape>;
 
 void add_object(const ParamTable& t, const ShapeLibrary& library, const std::filesystem::path& base_dir, Scene& scene,
-                std::vector<std::string>& warnings) {
+                MeshCache& meshes, std::vector<std::string>& warnings) {
     std::optional<Transform> transform;
     if (const ParamValue* v = t.find("transform")) transform = read_transform(*v, t.name_of("transform"));
     BuiltShape built;
@@ -282,7 +281,7 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, const std::fil
         built = it->second;
     } else {
         const std::string type = t.choice("type", kShapeTypes, "");
-        if (type == "mesh" && t.find("file")) return import_file(t, base_dir, transform, scene, warnings);
+        if (type == "mesh" && t.find("file")) return import_file(t, base_dir, transform, scene, meshes, warnings);
         built = build_shape(t, type, scene);
     }
     uint32_t material = built.first_material;
@@ -304,7 +303,7 @@ uint32_t material_by_name(const Scene& scene, const ParamValue& value, std::stri
     value.fail(what, "the name of a material in [[materials]]" + did_you_mean(name, names));
 }
 
-void add_objects(const ParamTable& root, const std::filesystem::path& base_dir, Scene& scene,
+void add_objects(const ParamTable& root, const std::filesystem::path& base_dir, Scene& scene, MeshCache& meshes,
                  std::vector<std::string>& warnings) {
     ShapeLibrary library;
     for (const ParamTable* t : root.tables("shapes")) {
@@ -316,7 +315,7 @@ void add_objects(const ParamTable& root, const std::filesystem::path& base_dir, 
         library.emplace(name, build_shape(*t, type, scene));
         t->reject_unknown_keys();
     }
-    for (const ParamTable* t : root.tables("objects")) add_object(*t, library, base_dir, scene, warnings);
+    for (const ParamTable* t : root.tables("objects")) add_object(*t, library, base_dir, scene, meshes, warnings);
 }
 
 }  // namespace glint

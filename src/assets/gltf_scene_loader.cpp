@@ -1,11 +1,12 @@
-#include "glint/io/gltf_scene_loader.h"
+#include "glint/assets/gltf_scene_loader.h"
 
 #include "gltf_document.h"
 #include "gltf_materials.h"
 #include "gltf_notes.h"
 #include "mesh_file.h"
 
-#include "glint/io/asset_defaults.h"
+#include "glint/diagnostics.h"
+#include "glint/scene/asset_defaults.h"
 #include "glint/math/constants.h"
 
 #include <algorithm>

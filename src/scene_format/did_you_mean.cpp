@@ -1,4 +1,4 @@
-#include "glint/io/did_you_mean.h"
+#include "glint/scene_format/did_you_mean.h"
 
 #include <algorithm>
 #include <cctype>

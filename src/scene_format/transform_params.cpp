@@ -1,4 +1,4 @@
-#include "glint/io/transform_params.h"
+#include "transform_params.h"
 
 #include <fmt/format.h>
 

@@ -1,0 +1,20 @@
+#pragma once
+/// \file What every loader produces: a scene and the render settings its file asks for.
+
+#include "glint/integrators/render_settings.h"
+#include "glint/scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace glint {
+
+/// The scene, the render settings the file asks for, and warnings about what the loader
+/// could not map (the render goes on without it).
+struct LoadedScene {
+    Scene scene;
+    RenderSettings settings;
+    std::vector<std::string> warnings;
+};
+
+}  // namespace glint

@@ -1,0 +1,16 @@
+#include "glint/diagnostics.h"
+
+#include <fmt/format.h>
+
+namespace glint {
+
+std::string SourceLocation::to_string() const {
+    const std::string name = file ? *file : std::string("<scene>");
+    return line == 0 ? name : fmt::format("{}:{}:{}", name, line, column);
+}
+
+void throw_scene_error(const SourceLocation& where, const std::string& message) {
+    throw LocatedSceneError(where, message);
+}
+
+}  // namespace glint
