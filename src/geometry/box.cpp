@@ -1,5 +1,7 @@
 #include "glint/geometry/box.h"
 
+#include "glint/scene_format/param_table.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -96,6 +98,12 @@ std::optional<ShapeSample> Box::sample_area(Vec2 u) const {
     p[a2] = box_.lo[a2] + u.y * e[a2];
     n[axis] = upper ? 1.0f : -1.0f;
     return ShapeSample{p, n, Vec2(s, u.y), 1.0f / area()};
+}
+
+std::shared_ptr<Shape> Box::from_params(const ParamTable& t, const BuildContext&) {
+    const Vec3 lo = t.require_vec3("min"), hi = t.require_vec3("max");
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) t.fail("max", "a corner above min on every axis");
+    return std::make_shared<Box>(lo, hi);
 }
 
 }  // namespace glint

@@ -1,5 +1,7 @@
 #include "glint/geometry/disk.h"
 
+#include "glint/scene_format/param_table.h"
+
 #include "glint/math/constants.h"
 #include "glint/math/frame.h"
 #include "glint/sampling/warp.h"
@@ -68,6 +70,18 @@ std::optional<ShapeSample> Disk::sample_area(Vec2 u) const {
     if (phi < 0.0f) phi += 2.0f * kPi;
     const Vec2 uv(std::sqrt(d.x * d.x + d.y * d.y) / radius_, phi / (2.0f * kPi));
     return ShapeSample{center_ + tangent_ * d.x + bitangent_ * d.y, normal_, uv, 1.0f / area()};
+}
+
+std::shared_ptr<Shape> Disk::from_params_facing(const ParamTable& t, const Vec3& default_normal) {
+    const Vec3 normal = t.vec3("normal", default_normal);
+    if (!(length(normal) > 0.0f)) t.fail("normal", "a non-zero direction the disk faces");
+    const float radius = t.require_number("radius");
+    if (!(radius > 0.0f)) t.fail("radius", "a positive radius");
+    return std::make_shared<Disk>(t.vec3("center", Vec3(0.0f)), normal, radius);
+}
+
+std::shared_ptr<Shape> Disk::from_params(const ParamTable& t, const BuildContext&) {
+    return from_params_facing(t, Vec3(0.0f, 1.0f, 0.0f));
 }
 
 }  // namespace glint

@@ -1,6 +1,10 @@
 #include "glint/geometry/heightfield.h"
 
 #include "glint/geometry/triangle.h"
+#include "glint/math/constants.h"
+#include "glint/scene_format/param_table.h"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -122,5 +126,56 @@ void Heightfield::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction
 }
 
 std::size_t Heightfield::memory_bytes() const { return sizeof(*this) + heights_.size() * sizeof(float); }
+
+std::shared_ptr<Shape> Heightfield::from_params(const ParamTable& t, const BuildContext&) {
+    const ParamValue& res = t.require("resolution", "[nx, nz], the number of grid vertices along x and z");
+    const auto& r = res.as_array(t.name_of("resolution"));
+    if (r.size() != 2) res.fail(t.name_of("resolution"), "[nx, nz], two integers");
+    const int64_t nx = r[0].as_integer(t.name_of("resolution") + "[0]"),
+                  nz = r[1].as_integer(t.name_of("resolution") + "[1]");
+    constexpr int64_t kMaxVertices = int64_t(1) << 24;
+    if (nx < 2 || nz < 2 || nx > kMaxVertices || nz > kMaxVertices || nx * nz > kMaxVertices)
+        res.fail(t.name_of("resolution"), "at least 2×2 and at most 16M grid vertices");
+    const Vec2 lo = t.require("min", "[x, z]").as_vec2(t.name_of("min"));
+    const Vec2 hi = t.require("max", "[x, z]").as_vec2(t.name_of("max"));
+    if (!(hi.x > lo.x && hi.y > lo.y)) t.fail("max", "a corner beyond min on both x and z");
+    std::vector<float> heights(std::size_t(nx * nz), t.number("height", 0.0f));
+    if (const ParamValue* h = t.find("heights")) {
+        // Row by row along +z, x fastest; either flat or one array per row.
+        std::vector<const ParamValue*> values;
+        for (const ParamValue& e : h->as_array(t.name_of("heights"))) {
+            if (!e.is_array()) {
+                values.push_back(&e);
+                continue;
+            }
+            const auto& row = e.as_array(t.name_of("heights"));
+            if (int64_t(row.size()) != nx) e.fail(t.name_of("heights") + " row", fmt::format("nx = {} heights", nx));
+            for (const ParamValue& x : row) values.push_back(&x);
+        }
+        if (values.size() != heights.size())
+            h->fail(t.name_of("heights"), fmt::format("nx·nz = {} heights, row by row (x fastest)", heights.size()));
+        for (std::size_t i = 0; i < values.size(); ++i) heights[i] += values[i]->as_float(fmt::format("{}[{}]", t.name_of("heights"), i));
+    }
+    for (const ParamTable* w : t.tables("waves")) {
+        // A sum of sine waves keeps a water surface a few lines long (the handout's pool).
+        const float amplitude = w->require_number("amplitude");
+        const float wavelength = w->require_number("wavelength");
+        if (!(wavelength > 0.0f)) w->fail("wavelength", "a positive wavelength in world units");
+        const Vec2 dir = w->vec2("direction", Vec2(1.0f, 0.0f));
+        const float len = std::sqrt(dir.x * dir.x + dir.y * dir.y);
+        if (!(len > 0.0f)) w->fail("direction", "a non-zero direction [dx, dz]");
+        const float phase = radians(w->number("phase", 0.0f));
+        w->reject_unknown_keys();
+        const float k = 2.0f * kPi / wavelength;
+        for (int64_t j = 0; j < nz; ++j)
+            for (int64_t i = 0; i < nx; ++i) {
+                const float x = lo.x + (hi.x - lo.x) * float(i) / float(nx - 1);
+                const float z = lo.y + (hi.y - lo.y) * float(j) / float(nz - 1);
+                heights[std::size_t(j * nx + i)] += amplitude * std::sin(k * (dir.x * x + dir.y * z) / len + phase);
+            }
+    }
+    return std::make_shared<Heightfield>(uint32_t(nx), uint32_t(nz), std::move(heights), lo, hi);
+}
+
 
 }  // namespace glint

@@ -1,5 +1,7 @@
 #include "glint/geometry/quad.h"
 
+#include "glint/scene_format/param_table.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -65,6 +67,24 @@ void Quad::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) c
     si.shading_normal = normal_;
     si.uv = Vec2(hit.u, hit.v);
     si.front_face = dot(ray.direction, normal_) < 0.0f;
+}
+
+std::shared_ptr<Shape> Quad::from_params(const ParamTable& t, const BuildContext&) {
+    const Vec3 corner = t.require_vec3("corner"), u = t.require_vec3("edge_u"), v = t.require_vec3("edge_v");
+    if (!(length(cross(u, v)) > 0.0f))
+        t.fail("edge_v", "an edge that is non-zero and not parallel to edge_u (a quad of positive area)");
+    return std::make_shared<Quad>(corner, u, v);
+}
+
+std::shared_ptr<Shape> Quad::plane_from_params(const ParamTable& t, const BuildContext&) {
+    const Vec3 center = t.vec3("center", Vec3(0.0f));
+    const ParamValue& s = t.require("size", "the extent along x and z: a number or [sx, sz]");
+    const Vec2 size = s.is_number() ? Vec2(s.as_float(t.name_of("size")), s.as_float(t.name_of("size")))
+                                    : s.as_vec2(t.name_of("size"));
+    if (!(size.x > 0.0f && size.y > 0.0f)) t.fail("size", "positive extents");
+    // Facing +y, u along +x and v along -z, so textures read left to right seen from above.
+    const Vec3 u(size.x, 0.0f, 0.0f), v(0.0f, 0.0f, -size.y);
+    return std::make_shared<Quad>(center - u * 0.5f - v * 0.5f, u, v);
 }
 
 }  // namespace glint

@@ -1,5 +1,7 @@
 #include "glint/geometry/sphere.h"
 
+#include "glint/scene_format/param_table.h"
+
 #include "glint/math/constants.h"
 #include "glint/math/frame.h"
 #include "glint/sampling/warp.h"
@@ -133,6 +135,13 @@ float Sphere::pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const {
     const float one_minus_cos_max =
         sin2_max < kThinCone ? sin2_max / 2.0f : 1.0f - std::sqrt(std::max(0.0f, 1.0f - sin2_max));
     return 1.0f / (2.0f * kPi * one_minus_cos_max);
+}
+
+std::shared_ptr<Shape> Sphere::from_params(const ParamTable& t, const BuildContext&) {
+    const Vec3 center = t.vec3("center", Vec3(0.0f));
+    const float radius = t.require_number("radius");
+    if (!(radius > 0.0f)) t.fail("radius", "a positive radius");
+    return std::make_shared<Sphere>(center, radius);
 }
 
 }  // namespace glint

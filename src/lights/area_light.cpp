@@ -1,11 +1,30 @@
 #include "glint/lights/area_light.h"
 
+#include "glint/geometry/disk.h"
+#include "glint/geometry/quad.h"
+#include "glint/geometry/sphere.h"
+#include "glint/scene/scene.h"
+#include "glint/scene_format/build_context.h"
+#include "glint/scene_format/transform_params.h"
+
 #include <cmath>
 #include <stdexcept>
 
 namespace glint {
 
 namespace {
+
+/// `radiance`, `transform` and `name` of an area light of `shape`; `two_sided` only for
+/// shapes with two sides (a closed sphere emits outwards).
+void add_shape_light(const ParamTable& t, BuildContext& context, std::shared_ptr<Shape> shape, bool has_two_sides) {
+    const Color radiance = emitted_color(t, "radiance");
+    const bool two_sided = has_two_sides && t.boolean("two_sided", false);
+    std::optional<Transform> transform;
+    if (const ParamValue* v = t.find("transform")) transform = read_transform(*v, t.name_of("transform"));
+    const std::string name = t.string("name", "");
+    t.reject_unknown_keys();
+    context.scene().add_area_light(std::move(shape), Emitter{radiance, two_sided}, transform, name);
+}
 
 Vec3 column(const Matrix4& m, int c) { return {m.m[0][c], m.m[1][c], m.m[2][c]}; }
 
@@ -98,6 +117,18 @@ float AreaLight::pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
     const float cos_light = std::abs(dot(n, d)) / std::sqrt(dist2);
     if (cos_light == 0.0f) return 0.0f;
     return area_pdf(n) * dist2 / cos_light;
+}
+
+void AreaLight::add_sphere_from_params(const ParamTable& t, BuildContext& context) {
+    add_shape_light(t, context, Sphere::from_params(t, context), false);
+}
+
+void AreaLight::add_quad_from_params(const ParamTable& t, BuildContext& context) {
+    add_shape_light(t, context, Quad::from_params(t, context), true);
+}
+
+void AreaLight::add_disk_from_params(const ParamTable& t, BuildContext& context) {
+    add_shape_light(t, context, Disk::from_params_facing(t, Vec3(0.0f, -1.0f, 0.0f)), true);
 }
 
 }  // namespace glint

@@ -1,8 +1,12 @@
 #include "glint/lights/light.h"
 
 #include "glint/math/constants.h"
+#include "glint/scene_format/param_table.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -14,6 +18,25 @@ namespace {
 Color fall_off(const Color& intensity, float distance, Falloff falloff) {
     const Color e = falloff == Falloff::InverseSquare ? intensity / (distance * distance) : intensity;
     return e * kPi;
+}
+
+constexpr std::array<std::string_view, 2> kFalloffs{"none", "inverse_square"};
+
+Falloff falloff_from_params(const ParamTable& t) {
+    return t.choice("falloff", kFalloffs, "none") == "inverse_square" ? Falloff::InverseSquare : Falloff::None;
+}
+
+Vec3 direction_from_params(const ParamTable& t) {
+    const Vec3 direction = t.require_vec3("direction");
+    if (!(length(direction) > 0.0f)) t.fail("direction", "a non-zero direction");
+    return direction;
+}
+
+/// A half-angle in degrees from 0 to `max`.
+float degrees_from_params(const ParamTable& t, std::string_view key, float fallback, float max) {
+    const float a = t.number(key, fallback);
+    if (a < 0.0f || a > max) t.fail(key, fmt::format("an angle from 0 to {} degrees", max));
+    return a;
 }
 
 LightSample delta_sample(const Vec3& direction, float distance, const Color& irradiance) {
@@ -73,6 +96,33 @@ LightSample SpotLight::sample(const Vec3& point, Vec2) const {
     LightSample s = delta_sample(dir, d, fall_off(intensity_, d, falloff_) * cone);
     s.point = position_;
     return s;
+}
+
+Color emitted_color(const ParamTable& t, std::string_view key) {
+    const Color c = t.color(key, Color(1.0f));
+    if (c.is_black()) t.fail(key, "a colour with some positive component: a light that emits nothing lights nothing");
+    return c;
+}
+
+std::unique_ptr<Light> PointLight::from_params(const ParamTable& t) {
+    const Color intensity = emitted_color(t, "intensity");
+    const Vec3 position = t.require_vec3("position");
+    return std::make_unique<PointLight>(position, intensity, falloff_from_params(t));
+}
+
+std::unique_ptr<Light> DirectionalLight::from_params(const ParamTable& t) {
+    const Color irradiance = emitted_color(t, "intensity");
+    return std::make_unique<DirectionalLight>(direction_from_params(t), irradiance);
+}
+
+std::unique_ptr<Light> SpotLight::from_params(const ParamTable& t) {
+    const Color intensity = emitted_color(t, "intensity");
+    const Vec3 position = t.require_vec3("position");
+    const Falloff falloff = falloff_from_params(t);
+    const Vec3 direction = direction_from_params(t);
+    const float outer = degrees_from_params(t, "outer_angle", 30.0f, 90.0f);
+    const float inner = degrees_from_params(t, "inner_angle", outer, outer);
+    return std::make_unique<SpotLight>(position, direction, intensity, radians(inner), radians(outer), falloff);
 }
 
 }  // namespace glint

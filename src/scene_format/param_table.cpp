@@ -190,6 +190,24 @@ Color ParamTable::color(std::string_view key, const Color& fallback) const {
     return v ? v->as_color(name_of(key)) : fallback;
 }
 
+std::vector<Vec3> ParamTable::vec3_list(std::string_view key, bool required) const {
+    std::vector<Vec3> out;
+    const ParamValue* v = required ? &require(key, "an array of [x, y, z]") : find(key);
+    if (!v) return out;
+    const auto& a = v->as_array(name_of(key));
+    for (std::size_t i = 0; i < a.size(); ++i) out.push_back(a[i].as_vec3(element_name(name_of(key), i)));
+    return out;
+}
+
+std::vector<Vec2> ParamTable::vec2_list(std::string_view key) const {
+    std::vector<Vec2> out;
+    if (const ParamValue* v = find(key)) {
+        const auto& a = v->as_array(name_of(key));
+        for (std::size_t i = 0; i < a.size(); ++i) out.push_back(a[i].as_vec2(element_name(name_of(key), i)));
+    }
+    return out;
+}
+
 std::string ParamTable::choice(std::string_view key, std::span<const std::string_view> choices,
                                std::string_view fallback) const {
     std::vector<std::string> names(choices.begin(), choices.end());

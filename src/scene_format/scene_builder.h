@@ -2,11 +2,10 @@
 /// \file From a parsed scene description (ParamTable tree) to a Scene and its render settings.
 /// Independent of the file syntax: the TOML front end produces the tree.
 
+#include "glint/scene/loaded_scene.h"
 #include "glint/scene_format/param_table.h"
-#include "glint/scene_file.h"
 
 #include <filesystem>
-#include <string_view>
 
 namespace glint {
 
@@ -14,10 +13,5 @@ namespace glint {
 /// `base_dir`. Throws SceneError at `file:line:column` for every mistake, including keys
 /// no section understands.
 [[nodiscard]] LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& base_dir);
-
-/// The file named by the string `key` of `table`, resolved against `base_dir`. Throws
-/// SceneError at the value if the file does not exist.
-[[nodiscard]] std::filesystem::path resolve_input_file(const ParamTable& table, std::string_view key,
-                                                       const std::filesystem::path& base_dir);
 
 }  // namespace glint

@@ -1,4 +1,4 @@
-#include "transform_params.h"
+#include "glint/scene_format/transform_params.h"
 
 #include <fmt/format.h>
 

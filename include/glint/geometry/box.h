@@ -11,6 +11,8 @@ class Box final : public Shape {
 public:
     /// Throws std::invalid_argument unless lo < hi on every axis.
     Box(const Vec3& lo, const Vec3& hi);
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::shared_ptr<Shape> from_params(const ParamTable& params, const BuildContext& context);
 
     [[nodiscard]] Bounds3 bounds() const override { return box_; }
     bool intersect(Ray& ray, Hit& hit) const override;

@@ -12,6 +12,11 @@ class Disk final : public Shape {
 public:
     /// Throws std::invalid_argument for a radius that is not finite and positive, or a zero normal.
     Disk(const Vec3& center, const Vec3& normal, float radius);
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    /// The disk faces `default_normal` unless the table gives a `normal`.
+    [[nodiscard]] static std::shared_ptr<Shape> from_params_facing(const ParamTable& params, const Vec3& default_normal);
+    /// The `[[objects]]` disk, facing +y by default.
+    [[nodiscard]] static std::shared_ptr<Shape> from_params(const ParamTable& params, const BuildContext& context);
 
     [[nodiscard]] Bounds3 bounds() const override;
     bool intersect(Ray& ray, Hit& hit) const override;

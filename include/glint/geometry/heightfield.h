@@ -18,6 +18,8 @@ public:
     /// `heights` holds nx·nz values, row by row (x fastest). Throws std::invalid_argument
     /// for fewer than 2×2 vertices, a size mismatch, an empty extent or a non-finite height.
     Heightfield(uint32_t nx, uint32_t nz, std::vector<float> heights, Vec2 min_xz, Vec2 max_xz);
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::shared_ptr<Shape> from_params(const ParamTable& params, const BuildContext& context);
 
     [[nodiscard]] Bounds3 bounds() const override { return bounds_; }
     bool intersect(Ray& ray, Hit& hit) const override;

@@ -11,6 +11,10 @@ class Quad final : public Shape {
 public:
     /// Throws std::invalid_argument if the edges are parallel or zero.
     Quad(const Vec3& corner, const Vec3& edge_u, const Vec3& edge_v);
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::shared_ptr<Shape> from_params(const ParamTable& params, const BuildContext& context);
+    /// `type = "plane"`: a quad centred on `center`, facing +y, of `size` along x and z.
+    [[nodiscard]] static std::shared_ptr<Shape> plane_from_params(const ParamTable& params, const BuildContext& context);
 
     [[nodiscard]] Bounds3 bounds() const override;
     bool intersect(Ray& ray, Hit& hit) const override;

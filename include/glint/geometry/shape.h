@@ -4,14 +4,17 @@
 #include "glint/geometry/hit.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
-
 #include "glint/math/vec2.h"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string_view>
 
 namespace glint {
+
+class BuildContext;
+class ParamTable;
 
 /// A point on a shape's surface chosen for light sampling, in the shape's object space.
 struct ShapeSample {

@@ -11,6 +11,8 @@ class Sphere final : public Shape {
 public:
     /// Throws std::invalid_argument for a radius that is not finite and positive.
     Sphere(const Vec3& center, float radius);
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::shared_ptr<Shape> from_params(const ParamTable& params, const BuildContext& context);
 
     [[nodiscard]] Bounds3 bounds() const override;
     bool intersect(Ray& ray, Hit& hit) const override;

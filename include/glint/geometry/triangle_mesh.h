@@ -38,6 +38,12 @@ public:
     /// Validates the data; throws std::invalid_argument naming the problem (index out of
     /// range, array size mismatch, non-finite position, no triangles).
     explicit TriangleMesh(MeshData data, std::string name = {});
+    /// The scene-file factories (docs/scene-format.md, src/geometry/triangle_mesh_params.cpp):
+    /// `type = "mesh"` with inline positions and indices, and `type = "triangle"`. Each
+    /// reads its keys and throws SceneError at a bad one.
+    [[nodiscard]] static std::shared_ptr<Shape> from_params(const ParamTable& params, const BuildContext& context);
+    [[nodiscard]] static std::shared_ptr<Shape> triangle_from_params(const ParamTable& params,
+                                                                     const BuildContext& context);
 
     [[nodiscard]] Bounds3 bounds() const override { return bounds_; }
     bool intersect(Ray& ray, Hit& hit) const override;

@@ -28,6 +28,14 @@ public:
     AreaLight(std::shared_ptr<Shape> shape, const std::optional<Transform>& world_from_object, const Color& radiance,
               const Texture* texture, bool two_sided);
 
+    /// The scene-file factories of `[[lights]]` type sphere, quad and disk
+    /// (docs/scene-format.md): each reads the shape's keys and `radiance`, `transform`,
+    /// `name` (and `two_sided` where a shape has two sides) and adds the light, with the
+    /// object it is, to the context's scene. A disk faces down unless told otherwise.
+    static void add_sphere_from_params(const ParamTable& params, BuildContext& context);
+    static void add_quad_from_params(const ParamTable& params, BuildContext& context);
+    static void add_disk_from_params(const ParamTable& params, BuildContext& context);
+
     [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override;
     [[nodiscard]] bool is_delta() const override { return false; }

@@ -13,9 +13,13 @@
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
 
+#include <memory>
 #include <string_view>
 
 namespace glint {
+
+class BuildContext;
+class ParamTable;
 
 struct LightSample {
     /// Unit vector from the receiving point towards the light.
@@ -57,10 +61,16 @@ public:
     [[nodiscard]] virtual std::string_view type_name() const = 0;
 };
 
+/// The colour of `key` (white when absent) for a light's intensity or radiance; throws
+/// SceneError if it is black (a light that emits nothing is a mistake).
+[[nodiscard]] Color emitted_color(const ParamTable& params, std::string_view key);
+
 class PointLight final : public Light {
 public:
     PointLight(const Vec3& position, const Color& intensity, Falloff falloff)
         : position_(position), intensity_(intensity), falloff_(falloff) {}
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::unique_ptr<Light> from_params(const ParamTable& params);
     [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] std::string_view type_name() const override { return "point"; }
     [[nodiscard]] const Vec3& position() const { return position_; }
@@ -78,6 +88,8 @@ private:
 class DirectionalLight final : public Light {
 public:
     DirectionalLight(const Vec3& direction, const Color& irradiance);
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::unique_ptr<Light> from_params(const ParamTable& params);
     [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] std::string_view type_name() const override { return "directional"; }
     [[nodiscard]] const Vec3& direction() const { return direction_; }
@@ -96,6 +108,8 @@ class SpotLight final : public Light {
 public:
     SpotLight(const Vec3& position, const Vec3& direction, const Color& intensity, float inner_angle,
               float outer_angle, Falloff falloff);
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::unique_ptr<Light> from_params(const ParamTable& params);
     [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] std::string_view type_name() const override { return "spot"; }
     [[nodiscard]] const Vec3& position() const { return position_; }

@@ -15,6 +15,9 @@
 
 namespace glint {
 
+class BuildContext;
+class ParamTable;
+
 struct Material {
     std::string name;
     /// ka: reflectance of the scene's ambient light.
@@ -35,7 +38,8 @@ struct Material {
     float transparency = 0.0f;
     /// Index of refraction of the dielectric.
     float ior = 1.5f;
-    /// Le: emitted radiance (seen by rays; does not light other surfaces).
+    /// Le: emitted radiance. It lights other surfaces as an area light unless the scene's
+    /// `emission_lights` is off (then it is only seen by rays that hit it).
     Color emission{0.0f};
     const Texture* emission_texture = nullptr;
     /// Cut-out mask: hits where texture alpha < alpha_cutoff are skipped, shadow rays too.
@@ -45,6 +49,10 @@ struct Material {
     float roughness = 0.0f;
 
     [[nodiscard]] bool is_dielectric() const { return transparency > 0.0f; }
+
+    /// The scene-file factory of `type = "standard"` (docs/scene-format.md): every key
+    /// above but `name`; throws SceneError at a bad one.
+    [[nodiscard]] static Material standard_from_params(const ParamTable& params, const BuildContext& context);
 };
 
 /// Barycentric blend of three materials' numeric parameters (per-vertex materials,

@@ -12,6 +12,9 @@
 
 namespace glint {
 
+class BuildContext;
+class ParamTable;
+
 class Texture {
 public:
     virtual ~Texture() = default;
@@ -27,6 +30,8 @@ public:
 class ImageTexture final : public Texture {
 public:
     ImageTexture(std::shared_ptr<const Image> image, WrapMode wrap = WrapMode::Repeat, Color scale = Color(1.0f));
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::unique_ptr<Texture> from_params(const ParamTable& params, BuildContext& context);
     [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const override;
     [[nodiscard]] float alpha(const Vec2& uv) const override;
     [[nodiscard]] std::string_view type_name() const override { return "image"; }
@@ -45,6 +50,8 @@ private:
 class CheckerTexture final : public Texture {
 public:
     CheckerTexture(Color even, Color odd, float scale) : even_(even), odd_(odd), scale_(scale) {}
+    /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
+    [[nodiscard]] static std::unique_ptr<Texture> from_params(const ParamTable& params, BuildContext& context);
     [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const override;
     [[nodiscard]] std::string_view type_name() const override { return "checker"; }
 

@@ -95,6 +95,10 @@ public:
     [[nodiscard]] Vec3 require_vec3(std::string_view key) const;
     [[nodiscard]] Vec2 vec2(std::string_view key, const Vec2& fallback) const;
     [[nodiscard]] Color color(std::string_view key, const Color& fallback) const;
+    /// An array of [x, y, z] (empty when absent and not `required`).
+    [[nodiscard]] std::vector<Vec3> vec3_list(std::string_view key, bool required) const;
+    /// An array of [x, y] (empty when absent).
+    [[nodiscard]] std::vector<Vec2> vec2_list(std::string_view key) const;
     /// A string that must be one of `choices` (or `fallback` when absent; an empty fallback
     /// makes the key required).
     [[nodiscard]] std::string choice(std::string_view key, std::span<const std::string_view> choices,
