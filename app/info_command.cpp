@@ -1,5 +1,7 @@
 #include "info_command.h"
 
+#include "glint/scene/render_scene.h"
+
 #include <fmt/core.h>
 
 #include <chrono>
@@ -21,9 +23,8 @@ int run_info(const std::string& path, const SceneOptions& opt) {
     const auto load_start = Clock::now();
     SceneSource source = load_scene(path, opt);
     const double load_seconds = seconds_since(load_start);
-    Scene& scene = source.loaded.scene;
     const auto build_start = Clock::now();
-    scene.prepare();
+    const RenderScene scene(std::move(source.loaded.scene));
     const double build_seconds = seconds_since(build_start);
     const SceneStatistics stats = scene.statistics();
 
@@ -35,8 +36,8 @@ int run_info(const std::string& path, const SceneOptions& opt) {
     fmt::print("file:        {}\n", path);
     fmt::print("objects:     {} ({} unique shapes)\n", stats.objects, stats.unique_shapes);
     fmt::print("triangles:   {} unique, {} instanced\n", stats.unique_triangles, stats.instanced_triangles);
-    fmt::print("materials:   {}\n", scene.materials().size());
-    fmt::print("textures:    {}\n", scene.texture_count());
+    fmt::print("materials:   {}\n", scene.description().materials().size());
+    fmt::print("textures:    {}\n", scene.description().texture_count());
     fmt::print("lights:      {}{}{}\n", scene.all_lights().size(), lights.empty() ? "" : ": ", lights);
     if (source.gltf) {
         const GltfReport& r = *source.gltf;
@@ -53,7 +54,7 @@ int run_info(const std::string& path, const SceneOptions& opt) {
                        c.aspect > 0.0f ? fmt::format(", aspect {:.4g}", c.aspect) : std::string());
         }
     }
-    const Camera& cam = scene.camera;
+    const Camera& cam = scene.camera();
     fmt::print("camera:      {} at ({:.4g}, {:.4g}, {:.4g}) looking ({:.3f}, {:.3f}, {:.3f})\n",
                cam.projection() == Projection::Perspective
                    ? fmt::format("perspective {:.4g} deg", cam.vertical_fov())

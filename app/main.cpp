@@ -8,6 +8,7 @@
 #include "glint/image/image_io.h"
 #include "glint/image/filter.h"
 #include "glint/integrators/integrator_registry.h"
+#include "glint/scene/render_scene.h"
 #include "glint/scene_file.h"
 
 #include <CLI/CLI.hpp>
@@ -78,15 +79,15 @@ int run_render(const RenderOptions& opt) {
     const double load_seconds = seconds_since(load_start);
 
     const auto build_start = Clock::now();
-    loaded.scene.prepare();
+    const glint::RenderScene scene(std::move(loaded.scene));
     const double build_seconds = seconds_since(build_start);
 
     glint::Film film(s.width, s.height);
     const std::unique_ptr<glint::Integrator> integrator = glint::make_integrator(s);
-    for (const std::string& w : integrator->warnings(loaded.scene)) fmt::print(stderr, "warning: {}\n", w);
+    for (const std::string& w : integrator->warnings(scene)) fmt::print(stderr, "warning: {}\n", w);
     glint::app::ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
     const glint::RenderStats stats =
-        integrator->render(loaded.scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
+        integrator->render(scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
     bar.finish();
 
     glint::WriteOptions write_options;

@@ -10,7 +10,7 @@
 #include "glint/geometry/sphere.h"
 #include "glint/image/image_io.h"
 #include "glint/integrators/whitted_integrator.h"
-#include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <cstdio>
 #include <exception>
@@ -52,14 +52,15 @@ int main(int argc, char** argv) {
         // A point light whose strength does not fall off with distance, as in the assignments.
         scene.add_light(std::make_unique<PointLight>(Vec3(4, 8, 6), Color(0.9f), Falloff::None));
 
-        scene.prepare();
+        // Build the acceleration structures and lights; the description is kept read-only.
+        const RenderScene prepared(std::move(scene));
 
         RenderSettings settings;
         settings.width = 480;
         settings.height = 320;
         settings.samples_per_axis = 2;  // 2×2 stratified samples per pixel
         Film film(settings.width, settings.height);
-        const RenderStats stats = WhittedIntegrator(settings.max_depth).render(scene, settings, film);
+        const RenderStats stats = WhittedIntegrator(settings.max_depth).render(prepared, settings, film);
 
         write_image(output, film.to_image());
         std::printf("%s: %.2f M rays in %.2f s\n", output, double(stats.rays) * 1e-6, stats.seconds);

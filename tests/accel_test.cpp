@@ -8,6 +8,7 @@
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/assets/mesh_loader.h"
 #include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -171,16 +172,16 @@ TEST(Instancing, TransformedInstancesShareOneBlasAndMatchBakedGeometry) {
         for (const Vec3& p : shape->data().positions) baked.positions.push_back(t.point(p));
         for (uint32_t i : shape->data().indices) baked.indices.push_back(base + i);
     }
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     TriangleMesh reference(std::move(baked));
     const size_t per_instance = shape->triangle_count();
-    for (const Ray& ray : random_rays(scene.bounds(), 3000, 11)) {
+    for (const Ray& ray : random_rays(prepared.bounds(), 3000, 11)) {
         Ray world = ray, ref_ray = ray;
         Hit hit, ref_hit;
-        const bool found = scene.intersect(world, hit);
+        const bool found = prepared.intersect(world, hit);
         const bool expected = brute_force_intersect(reference, ref_ray, ref_hit);
         ASSERT_EQ(found, expected);
-        EXPECT_EQ(scene.occluded(ray), expected);
+        EXPECT_EQ(prepared.occluded(ray), expected);
         if (!found) continue;
         EXPECT_NEAR(hit.t, ref_hit.t, 1e-4f * ref_hit.t);
         EXPECT_EQ(hit.object, ref_hit.primitive / per_instance);
@@ -214,11 +215,11 @@ TEST(Degenerate, ZeroAreaTrianglesAreNeverHitAndDoNotDisturbTheRest) {
 
 TEST(Degenerate, EmptyInputsHitNothing) {
     Scene scene;
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     Ray ray(Vec3(0.0f), Vec3(0, 0, 1));
     Hit hit;
-    EXPECT_FALSE(scene.intersect(ray, hit));
-    EXPECT_FALSE(scene.occluded(ray));
+    EXPECT_FALSE(prepared.intersect(ray, hit));
+    EXPECT_FALSE(prepared.occluded(ray));
 
     const std::vector<Bounds3> nothing_to_hit(3);  // empty boxes only
     Bvh bvh;

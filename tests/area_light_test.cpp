@@ -12,6 +12,7 @@
 #include "glint/math/frame.h"
 #include "glint/sampling/sampler.h"
 #include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -25,7 +26,7 @@ namespace {
 /// the direction meets the light (found by tracing the scene that holds only the light).
 /// The grid's pole points at the light and its band covers the light's bounding sphere, so
 /// that even a small light spans many cells.
-Chi2Result light_chi2(const Scene& scene, const Light& light, const Vec3& ref, uint64_t seed = 3) {
+Chi2Result light_chi2(const RenderScene& scene, const Light& light, const Vec3& ref, uint64_t seed = 3) {
     const Bounds3 box = scene.bounds();
     const Vec3 center = (box.lo + box.hi) * 0.5f;
     const float radius = 0.5f * length(box.hi - box.lo);
@@ -50,12 +51,11 @@ Chi2Result light_chi2(const Scene& scene, const Light& light, const Vec3& ref, u
     return chi2_spherical_grid(sample, pdf, {12, 24, cos_min, 1.0}, {300'000, seed, 0.01, 1});
 }
 
-Scene scene_with_light(std::shared_ptr<Shape> shape, const std::optional<Transform>& transform = std::nullopt,
+RenderScene scene_with_light(std::shared_ptr<Shape> shape, const std::optional<Transform>& transform = std::nullopt,
                        bool two_sided = true) {
     Scene scene;
     scene.add_area_light(std::move(shape), Emitter{Color(1.0f), two_sided}, transform);
-    scene.prepare();
-    return scene;
+    return RenderScene(std::move(scene));
 }
 
 /// An open, gently folded sheet of two triangles: seen from the +z side every direction
@@ -72,7 +72,7 @@ std::shared_ptr<TriangleMesh> folded_sheet() {
 }  // namespace
 
 TEST(AreaLightSampling, SphereFromOutsideIsUniformOverItsCone) {
-    const Scene scene = scene_with_light(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f));
+    const RenderScene scene = scene_with_light(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f));
     for (const Vec3 ref : {Vec3(0, 0, 3), Vec3(2, 1, -1.5f), Vec3(0, 30, 0)}) {
         const Chi2Result r = light_chi2(scene, *scene.area_lights()[0], ref);
         EXPECT_TRUE(r.passed) << "from " << ref.x << "," << ref.y << "," << ref.z << "\n" << r.report;
@@ -84,17 +84,17 @@ TEST(AreaLightSampling, SphereFromOutsideIsUniformOverItsCone) {
 }
 
 TEST(AreaLightSampling, SphereFromInsideSamplesItsArea) {
-    const Scene scene = scene_with_light(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f));
+    const RenderScene scene = scene_with_light(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f));
     const Chi2Result r = light_chi2(scene, *scene.area_lights()[0], Vec3(0.2f, -0.3f, 0.1f));
     EXPECT_TRUE(r.passed) << r.report;
 }
 
 TEST(AreaLightSampling, QuadDiskAndMeshMatchTheirPdf) {
     const Vec3 ref(0.3f, 0.4f, 2.0f);
-    const Scene quad = scene_with_light(std::make_shared<Quad>(Vec3(-1, -0.5f, 0), Vec3(2, 0, 0.3f), Vec3(0, 1.2f, 0)));
-    const Scene disk = scene_with_light(std::make_shared<Disk>(Vec3(0, 0, 0), Vec3(0.2f, 0.1f, 1), 0.8f));
-    const Scene mesh = scene_with_light(folded_sheet());
-    for (const Scene* s : {&quad, &disk, &mesh}) {
+    const RenderScene quad = scene_with_light(std::make_shared<Quad>(Vec3(-1, -0.5f, 0), Vec3(2, 0, 0.3f), Vec3(0, 1.2f, 0)));
+    const RenderScene disk = scene_with_light(std::make_shared<Disk>(Vec3(0, 0, 0), Vec3(0.2f, 0.1f, 1), 0.8f));
+    const RenderScene mesh = scene_with_light(folded_sheet());
+    for (const RenderScene* s : {&quad, &disk, &mesh}) {
         const Chi2Result r = light_chi2(*s, *s->area_lights()[0], ref);
         EXPECT_TRUE(r.passed) << s->area_lights()[0]->shape().type_name() << "\n" << r.report;
     }
@@ -135,7 +135,7 @@ double polygon_irradiance(const std::vector<Vec3>& vertices, const Vec3& p, cons
 
 TEST(AreaLightIrradiance, SphereLightMatchesPiLSin2ThetaMax) {
     // Facing the centre of a sphere light of radiance L: E = π·L·sin²θmax = π·L·(r/d)².
-    const Scene scene = scene_with_light(std::make_shared<Sphere>(Vec3(0, 5, 0), 1.5f));
+    const RenderScene scene = scene_with_light(std::make_shared<Sphere>(Vec3(0, 5, 0), 1.5f));
     const Light& light = *scene.area_lights()[0];
     for (const float d : {5.0f, 2.0f}) {
         const Vec3 p(0, 5 - d, 0);
@@ -154,7 +154,7 @@ TEST(AreaLightIrradiance, SphereLightMatchesPiLSin2ThetaMax) {
 
 TEST(AreaLightIrradiance, QuadLightMatchesThePolygonFormula) {
     const Vec3 corner(-1, 2, -0.5f), eu(2, 0, 0), ev(0, 0.4f, 1.5f);
-    const Scene scene = scene_with_light(std::make_shared<Quad>(corner, eu, ev));
+    const RenderScene scene = scene_with_light(std::make_shared<Quad>(corner, eu, ev));
     const std::vector<Vec3> vertices{corner, corner + eu, corner + eu + ev, corner + ev};
     for (const auto& [p, n] : {std::pair{Vec3(0, 0, 0), Vec3(0, 1, 0)}, std::pair{Vec3(1.5f, 0.5f, 0.3f), normalize(Vec3(-0.3f, 1, 0.2f))},
                                std::pair{Vec3(-0.4f, 1.2f, 2.0f), normalize(Vec3(0, 0.5f, -1))}}) {
@@ -173,13 +173,13 @@ TEST(AreaLightIrradiance, NonUniformlyScaledLightsKeepTheirPdfRight) {
     MeshData square;
     square.positions = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
     square.indices = {0, 1, 2, 0, 2, 3};
-    const Scene quad = scene_with_light(std::make_shared<Quad>(Vec3(-0.5f, -0.5f, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)), place);
-    const Scene mesh = scene_with_light(std::make_shared<TriangleMesh>(std::move(square)), place);
+    const RenderScene quad = scene_with_light(std::make_shared<Quad>(Vec3(-0.5f, -0.5f, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)), place);
+    const RenderScene mesh = scene_with_light(std::make_shared<TriangleMesh>(std::move(square)), place);
     std::vector<Vec3> vertices;
     for (const Vec3 v : {Vec3(-0.5f, -0.5f, 0), Vec3(0.5f, -0.5f, 0), Vec3(0.5f, 0.5f, 0), Vec3(-0.5f, 0.5f, 0)})
         vertices.push_back(place.point(v));
     const Vec3 p(0.3f, 0.0f, 0.2f), n(0, 1, 0);
-    for (const Scene* s : {&quad, &mesh}) {
+    for (const RenderScene* s : {&quad, &mesh}) {
         const auto [mean, stderr_] = irradiance_estimate(*s->area_lights()[0], p, n, 40000);
         EXPECT_NEAR(mean, polygon_irradiance(vertices, p, n, 1.0), 4.0 * stderr_ + 1e-6)
             << s->area_lights()[0]->shape().type_name();
@@ -198,8 +198,8 @@ TEST(AreaLightShadows, SphereLightPenumbraHasTheWidthOfItsTangentPlanes) {
     scene.add_object(std::make_shared<Quad>(Vec3(-50, edge, -50), Vec3(0, 0, 100), Vec3(50, 0, 0)),
                      scene.add_material(black));
     scene.add_area_light(std::make_shared<Sphere>(Vec3(0, height, 0), radius), Emitter{Color(1.0f), false});
-    scene.prepare();
-    const Light& light = *scene.area_lights()[0];
+    const RenderScene prepared(std::move(scene));
+    const Light& light = *prepared.area_lights()[0];
     const float half_width = radius * edge / std::sqrt((height - edge) * (height - edge) - radius * radius);
 
     auto visible_fraction = [&](float x) {
@@ -209,7 +209,7 @@ TEST(AreaLightShadows, SphereLightPenumbraHasTheWidthOfItsTangentPlanes) {
         for (int i = 0; i < kSamples; ++i) {
             const Vec2 u = correlated_multi_jitter(uint32_t(i), kSamples, 12345u);
             const LightSample ls = light.sample(p, u);
-            if (!scene.occluded(shadow_ray(p, Vec3(0, 1, 0), ls))) ++visible;
+            if (!prepared.occluded(shadow_ray(p, Vec3(0, 1, 0), ls))) ++visible;
         }
         return double(visible) / kSamples;
     };
@@ -222,7 +222,7 @@ TEST(AreaLightShadows, SphereLightPenumbraHasTheWidthOfItsTangentPlanes) {
 }
 
 TEST(AreaLight, OneSidedLightsEmitOnTheirFrontOnly) {
-    const Scene scene = scene_with_light(std::make_shared<Quad>(Vec3(-1, 1, -1), Vec3(2, 0, 0), Vec3(0, 0, 2)),
+    const RenderScene scene = scene_with_light(std::make_shared<Quad>(Vec3(-1, 1, -1), Vec3(2, 0, 0), Vec3(0, 0, 2)),
                                          std::nullopt, false);  // edge_u × edge_v = −y: faces down
     const Light& light = *scene.area_lights()[0];
     EXPECT_FALSE(light.sample(Vec3(0, 0, 0), Vec2(0.5f, 0.5f)).radiance.is_black());

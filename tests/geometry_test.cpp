@@ -6,6 +6,7 @@
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/math/offset_ray.h"
 #include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -315,45 +316,45 @@ TEST(Scene, TransformedInstancesShareOneShape) {
     auto unit = std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f);
     scene.add_object(unit, m, Transform::translate({5, 0, 0}) * Transform::scale({2, 2, 2}));
     scene.add_object(unit, m, Transform::translate({-5, 0, 0}));
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     Ray r({5, 0, -10}, {0, 0, 1});
     Hit h;
-    ASSERT_TRUE(scene.intersect(r, h));
+    ASSERT_TRUE(prepared.intersect(r, h));
     EXPECT_NEAR(h.t, 8.0f, 1e-5f);  // radius 2 after scaling
     EXPECT_EQ(h.object, 0u);
-    const SurfaceInteraction si = scene.interaction(r, h);
+    const SurfaceInteraction si = prepared.interaction(r, h);
     EXPECT_NEAR(si.p.z, -2.0f, 1e-5f);
     EXPECT_NEAR(si.geometric_normal.z, -1.0f, 1e-5f);
     Ray r2({-5, 0, -10}, {0, 0, 1});
-    ASSERT_TRUE(scene.intersect(r2, h));
+    ASSERT_TRUE(prepared.intersect(r2, h));
     EXPECT_NEAR(h.t, 9.0f, 1e-5f);
     EXPECT_EQ(h.object, 1u);
-    EXPECT_EQ(scene.statistics().unique_shapes, 1u);
+    EXPECT_EQ(prepared.statistics().unique_shapes, 1u);
 }
 
 TEST(Scene, NonUniformScaleGivesEllipsoidNormals) {
     Scene scene;
     scene.add_material(Material{});
     scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), 0, Transform::scale({3, 1, 1}));
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     // Point on the ellipsoid x²/9 + y² = 1 at x = 3/√2·..., reached straight down from above.
     const float x = 1.5f, y = std::sqrt(1.0f - x * x / 9.0f);
     Ray r({x, 5, 0}, {0, -1, 0});
     Hit h;
-    ASSERT_TRUE(scene.intersect(r, h));
+    ASSERT_TRUE(prepared.intersect(r, h));
     EXPECT_NEAR(h.t, 5.0f - y, 1e-5f);
-    const SurfaceInteraction si = scene.interaction(r, h);
+    const SurfaceInteraction si = prepared.interaction(r, h);
     const Vec3 expected = normalize(Vec3(x / 9.0f, y, 0));  // gradient of the implicit form
     EXPECT_NEAR(dot(si.geometric_normal, expected), 1.0f, 1e-5f);
 }
 
 TEST(Scene, EmptySceneHitsNothing) {
     Scene scene;
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     Ray r({0, 0, 0}, {0, 0, 1});
     Hit h;
-    EXPECT_FALSE(scene.intersect(r, h));
-    EXPECT_FALSE(scene.occluded(r));
+    EXPECT_FALSE(prepared.intersect(r, h));
+    EXPECT_FALSE(prepared.occluded(r));
 }
 
 TEST(Scene, DielectricShadowSetting) {
@@ -363,11 +364,11 @@ TEST(Scene, DielectricShadowSetting) {
         glass.transparency = 1.0f;
         scene.dielectric_shadows = mode;
         scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), scene.add_material(glass));
-        scene.prepare();
+        const RenderScene prepared(std::move(scene));
         const Ray shadow({0, 0, -5}, {0, 0, 1}, 0.0f, 10.0f);
-        EXPECT_EQ(scene.occluded(shadow), mode == DielectricShadows::Opaque);
+        EXPECT_EQ(prepared.occluded(shadow), mode == DielectricShadows::Opaque);
         Ray camera = shadow;
         Hit h;
-        EXPECT_TRUE(scene.intersect(camera, h));  // still visible to camera rays
+        EXPECT_TRUE(prepared.intersect(camera, h));  // still visible to camera rays
     }
 }

@@ -5,6 +5,7 @@
 
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/assets/gltf_scene_loader.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -111,11 +112,11 @@ TEST(GltfMaterials, AlphaMaskCutsTheMeshAndBlendCastsNoShadow) {
     ASSERT_NE(mesh.alpha_mask(), nullptr);
     EXPECT_FLOAT_EQ(s.loaded.scene.materials()[0].alpha_cutoff, 0.3f);
     glint::Scene& scene = s.loaded.scene;
-    scene.prepare();
+    const glint::RenderScene prepared(std::move(scene));
     glint::Ray down(glint::Vec3(0.5f, 1.0f, 0.5f), glint::Vec3(0.0f, -1.0f, 0.0f));
     glint::Hit hit;
-    EXPECT_FALSE(scene.intersect(down, hit)) << "alpha 0 < cutoff: the quad is cut away";
-    EXPECT_FALSE(scene.occluded(glint::Ray(glint::Vec3(0.5f, 1.0f, 0.5f), glint::Vec3(0.0f, -1.0f, 0.0f))));
+    EXPECT_FALSE(prepared.intersect(down, hit)) << "alpha 0 < cutoff: the quad is cut away";
+    EXPECT_FALSE(prepared.occluded(glint::Ray(glint::Vec3(0.5f, 1.0f, 0.5f), glint::Vec3(0.0f, -1.0f, 0.0f))));
 
     const auto blend = quad_with_material({{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}}}});
     EXPECT_TRUE(blend.loaded.scene.materials()[0].is_dielectric()) << "see-through layer: no shadow";

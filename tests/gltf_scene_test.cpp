@@ -7,6 +7,7 @@
 #include "glint/integrators/whitted_integrator.h"
 #include "glint/assets/gltf_scene_loader.h"
 #include "glint/math/constants.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -169,14 +170,14 @@ TEST_P(GltfSample, CountsCameraAndRenderMatchTheFile) {
         }
     }
 
-    scene.prepare();
-    EXPECT_EQ(scene.statistics().unique_triangles, want.triangles);
-    EXPECT_EQ(scene.statistics().instanced_triangles, want.instanced_triangles);
+    const glint::RenderScene prepared(std::move(scene));
+    EXPECT_EQ(prepared.statistics().unique_triangles, want.triangles);
+    EXPECT_EQ(prepared.statistics().instanced_triangles, want.instanced_triangles);
     glint::RenderSettings settings;
     settings.width = 32;
     settings.height = 24;
     glint::Film film(settings.width, settings.height);
-    glint::WhittedIntegrator(4).render(scene, settings, film, {});
+    glint::WhittedIntegrator(4).render(prepared, settings, film, {});
     float lo = glint::kInfinity, hi = -glint::kInfinity;
     std::size_t bad = 0;
     for (uint32_t y = 0; y < film.height(); ++y)

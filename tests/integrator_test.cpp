@@ -8,6 +8,7 @@
 #include "glint/math/constants.h"
 #include "glint/scene/default_scene.h"
 #include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@ using namespace glint;
 namespace {
 
 /// Radiance along one ray with the Whitted integrator.
-Color radiance(const Scene& scene, const Ray& ray, uint32_t max_depth = 5) {
+Color radiance(const RenderScene& scene, const Ray& ray, uint32_t max_depth = 5) {
     Sampler sampler(0, 1);
     sampler.start_pixel_sample(0, 0);
     TraceContext context{sampler};
@@ -48,10 +49,10 @@ TEST(WhittedRadiance, LambertSphereUnderInverseSquarePointLight) {
     const Vec3 light_pos(3, 4, 5);
     const Color intensity(20.0f, 10.0f, 5.0f);
     scene.add_light(std::make_unique<PointLight>(light_pos, intensity, Falloff::InverseSquare));
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     for (const Vec3& target : {Vec3(0, 0, 1), normalize(Vec3(1, 1, 1)), normalize(Vec3(0.2f, 0.9f, 0.3f))}) {
         const Vec3 eye = target * 6.0f;
-        const Color L = radiance(scene, Ray(eye, normalize(target - eye)));
+        const Color L = radiance(prepared, Ray(eye, normalize(target - eye)));
         const Vec3 to_light = light_pos - target;
         const float d2 = dot(to_light, to_light);
         const float cos_theta = dot(target, normalize(to_light));
@@ -66,9 +67,9 @@ TEST(WhittedRadiance, AssignmentLightsDoNotFallOff) {
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)),
                      scene.add_material(lambert(Color(0.5f))));
     scene.add_light(std::make_unique<PointLight>(Vec3(0, 100, 0), Color(0.8f), Falloff::None));
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     // Straight below the light: cos θ = 1, no 1/d²: L = kd · I.
-    expect_color_near(radiance(scene, Ray({0, 1, 0.0f}, {0, -1, 0})), Color(0.4f), 1e-5f);
+    expect_color_near(radiance(prepared, Ray({0, 1, 0.0f}, {0, -1, 0})), Color(0.4f), 1e-5f);
 }
 
 TEST(WhittedRadiance, PlaneUnderDirectionalLightRendersTheFormulaEverywhere) {
@@ -81,15 +82,15 @@ TEST(WhittedRadiance, PlaneUnderDirectionalLightRendersTheFormulaEverywhere) {
     const Color e(2.0f);
     scene.add_light(std::make_unique<DirectionalLight>(dir, e));
     scene.camera = Camera::perspective({0, 5, 5}, {0, 0, 0}, {0, 1, 0}, 30.0f);
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     RenderSettings settings;
     settings.width = 32;
     settings.height = 24;
     settings.samples_per_axis = 2;
     Film film(settings.width, settings.height);
-    const RenderStats stats = WhittedIntegrator().render(scene, settings, film);
+    const RenderStats stats = WhittedIntegrator().render(prepared, settings, film);
     // ka·La + kd·E·cos θ with cos θ = -dir.y.
-    const Color expected = ka * scene.ambient_light + kd * e * (-dir.y);
+    const Color expected = ka * prepared.ambient_light() + kd * e * (-dir.y);
     for (uint32_t y = 0; y < settings.height; ++y)
         for (uint32_t x = 0; x < settings.width; ++x) expect_color_near(film.at(x, y), expected, 1e-5f);
     // Every sample: one camera ray and one shadow ray.
@@ -104,10 +105,10 @@ TEST(WhittedRadiance, ShadowedPointGetsOnlyAmbient) {
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)), m);
     scene.add_object(std::make_shared<Sphere>(Vec3(0, 2, 0), 0.5f), m);  // blocker above the origin
     scene.add_light(std::make_unique<PointLight>(Vec3(0, 5, 0), Color(1.0f), Falloff::None));
-    scene.prepare();
-    const Color shadowed = radiance(scene, Ray({0.05f, 1, 0.05f}, {0, -1, 0}));
-    expect_color_near(shadowed, ka * scene.ambient_light, 1e-6f);
-    const Color lit = radiance(scene, Ray({5, 1, 5}, {0, -1, 0}));
+    const RenderScene prepared(std::move(scene));
+    const Color shadowed = radiance(prepared, Ray({0.05f, 1, 0.05f}, {0, -1, 0}));
+    expect_color_near(shadowed, ka * prepared.ambient_light(), 1e-6f);
+    const Color lit = radiance(prepared, Ray({5, 1, 5}, {0, -1, 0}));
     EXPECT_GT(lit.r, shadowed.r + 0.1f);
 }
 
@@ -116,8 +117,8 @@ TEST(WhittedRadiance, LightBehindTheSurfaceContributesNothing) {
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)),
                      scene.add_material(lambert(Color(1.0f))));
     scene.add_light(std::make_unique<PointLight>(Vec3(0, -5, 0), Color(1.0f), Falloff::None));
-    scene.prepare();
-    expect_color_near(radiance(scene, Ray({0, 1, 0}, {0, -1, 0})), Color(0.0f), 0.0f);
+    const RenderScene prepared(std::move(scene));
+    expect_color_near(radiance(prepared, Ray({0, 1, 0}, {0, -1, 0})), Color(0.0f), 0.0f);
 }
 
 TEST(WhittedRadiance, BlinnPhongHighlightAtTheMirrorDirection) {
@@ -127,14 +128,14 @@ TEST(WhittedRadiance, BlinnPhongHighlightAtTheMirrorDirection) {
     m.shininess = 20.0f;
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)), scene.add_material(m));
     scene.add_light(std::make_unique<PointLight>(Vec3(0, 10, 0), Color(1.0f), Falloff::None));
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     // Viewer and light both straight above: H = N, highlight = ks·E·cos θ = 0.5.
-    expect_color_near(radiance(scene, Ray({0, 1, 0}, {0, -1, 0})), Color(0.5f), 1e-5f);
+    expect_color_near(radiance(prepared, Ray({0, 1, 0}, {0, -1, 0})), Color(0.5f), 1e-5f);
     // Off the mirror direction it falls as (N·H)^s.
     const Vec3 eye(3, 3, 0), p(0, 0, 0);
     const Vec3 h = normalize(normalize(eye - p) + Vec3(0, 1, 0));
     const float expected = 0.5f * std::pow(h.y, 20.0f);
-    EXPECT_NEAR(radiance(scene, Ray(eye, normalize(p - eye))).r, expected, 1e-5f);
+    EXPECT_NEAR(radiance(prepared, Ray(eye, normalize(p - eye))).r, expected, 1e-5f);
 }
 
 TEST(WhittedRadiance, MirrorReflectsTheBackgroundWeightedByReflectivity) {
@@ -144,11 +145,11 @@ TEST(WhittedRadiance, MirrorReflectsTheBackgroundWeightedByReflectivity) {
     mirror.reflectivity = Color(0.9f, 0.5f, 0.25f);
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)),
                      scene.add_material(mirror));
-    scene.prepare();
-    expect_color_near(radiance(scene, Ray({0, 1, 0}, normalize(Vec3(1, -1, 0)))),
+    const RenderScene prepared(std::move(scene));
+    expect_color_near(radiance(prepared, Ray({0, 1, 0}, normalize(Vec3(1, -1, 0)))),
                       Color(0.18f, 0.2f, 0.2f), 1e-6f);
     // Depth 0: no recursion at all, the mirror is black.
-    expect_color_near(radiance(scene, Ray({0, 1, 0}, {0, -1, 0}), 0), Color(0.0f), 0.0f);
+    expect_color_near(radiance(prepared, Ray({0, 1, 0}, {0, -1, 0}), 0), Color(0.0f), 0.0f);
 }
 
 TEST(WhittedRadiance, GlassSlabHeadOnFollowsFresnel) {
@@ -161,11 +162,11 @@ TEST(WhittedRadiance, GlassSlabHeadOnFollowsFresnel) {
     glass.transparency = 1.0f;
     glass.ior = 1.5f;
     scene.add_object(std::make_shared<Box>(Vec3(-5, -5, -0.5f), Vec3(5, 5, 0.5f)), scene.add_material(glass));
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     const float f = 0.04f;
     const Ray head_on({0, 0, 5}, {0, 0, -1});
-    expect_color_near(radiance(scene, head_on, 2), b * (f + (1 - f) * (1 - f)), 1e-5f);
-    expect_color_near(radiance(scene, head_on, 1), b * f, 1e-6f);
+    expect_color_near(radiance(prepared, head_on, 2), b * (f + (1 - f) * (1 - f)), 1e-5f);
+    expect_color_near(radiance(prepared, head_on, 1), b * f, 1e-6f);
 }
 
 TEST(WhittedRadiance, TotalInternalReflectionKeepsLightInside) {
@@ -176,7 +177,8 @@ TEST(WhittedRadiance, TotalInternalReflectionKeepsLightInside) {
     glass.transparency = 1.0f;
     glass.ior = 1.5f;
     scene.add_object(std::make_shared<Box>(Vec3(-10, -1, -10), Vec3(10, 0, 10)), scene.add_material(glass));
-    scene.prepare();
+    scene.background = Background::constant(Color(1.0f));
+    const RenderScene prepared(std::move(scene));
     // Start inside the glass, 60° from the top face's normal (critical angle 41.8°).
     const Vec3 d = normalize(Vec3(std::sin(radians(60.0f)), std::cos(radians(60.0f)), 0));
     IorStack inside = IorStack(1.0f).entered(0, 1.5f);
@@ -185,12 +187,11 @@ TEST(WhittedRadiance, TotalInternalReflectionKeepsLightInside) {
     TraceContext ctx{sampler};
     const WhittedIntegrator integrator(1);
     // With depth 1 the TIR reflection is traced but cut: black, never the background.
-    scene.background = Background::constant(Color(1.0f));
-    const Color c = integrator.trace(scene, Ray({0, -0.5f, 0}, d), 0, inside, ctx);
+    const Color c = integrator.trace(prepared, Ray({0, -0.5f, 0}, d), 0, inside, ctx);
     expect_color_near(c, Color(0.0f), 1e-6f);
     // At 20° (below critical) most light leaves: we see mostly the white background.
     const Vec3 d2 = normalize(Vec3(std::sin(radians(20.0f)), std::cos(radians(20.0f)), 0));
-    const Color c2 = integrator.trace(scene, Ray({0, -0.5f, 0}, d2), 0, inside, ctx);
+    const Color c2 = integrator.trace(prepared, Ray({0, -0.5f, 0}, d2), 0, inside, ctx);
     EXPECT_GT(c2.r, 0.9f);
 }
 
@@ -205,9 +206,9 @@ TEST(WhittedRadiance, PerVertexMaterialsBlendWithBarycentrics) {
     d.vertex_materials = {red, green, blue};
     scene.add_object(std::make_shared<TriangleMesh>(d), red);
     scene.add_light(std::make_unique<DirectionalLight>(Vec3(0, -1, 0), Color(1.0f)));
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     // Barycentric weights (0.5, 0.25, 0.25) at p = 0.25·v1 + 0.25·v2.
-    expect_color_near(radiance(scene, Ray({0.25f, 1, -0.25f}, {0, -1, 0})), Color(0.5f, 0.25f, 0.25f), 1e-5f);
+    expect_color_near(radiance(prepared, Ray({0.25f, 1, -0.25f}, {0, -1, 0})), Color(0.5f, 0.25f, 0.25f), 1e-5f);
 }
 
 TEST(WhittedRadiance, SpotLightConeCutsOff) {
@@ -223,7 +224,7 @@ TEST(WhittedRadiance, SpotLightConeCutsOff) {
 
 TEST(Render, IdenticalForAnyThreadCount) {
     Scene scene = make_spheres_scene();
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     RenderSettings settings;
     settings.width = 64;
     settings.height = 48;
@@ -231,25 +232,17 @@ TEST(Render, IdenticalForAnyThreadCount) {
     settings.seed = 42;
     Film one(64, 48), two(64, 48);
     settings.threads = 1;
-    WhittedIntegrator().render(scene, settings, one);
+    WhittedIntegrator().render(prepared, settings, one);
     settings.threads = 2;
-    WhittedIntegrator().render(scene, settings, two);
+    WhittedIntegrator().render(prepared, settings, two);
     for (uint32_t y = 0; y < 48; ++y)
         for (uint32_t x = 0; x < 64; ++x) ASSERT_EQ(one.at(x, y), two.at(x, y)) << x << "," << y;
     // A different seed moves the jittered samples: the image must change somewhere.
     settings.seed = 43;
     Film other(64, 48);
-    WhittedIntegrator().render(scene, settings, other);
+    WhittedIntegrator().render(prepared, settings, other);
     bool differs = false;
     for (uint32_t y = 0; y < 48 && !differs; ++y)
         for (uint32_t x = 0; x < 64 && !differs; ++x) differs = !(one.at(x, y) == other.at(x, y));
     EXPECT_TRUE(differs);
-}
-
-TEST(Render, RequiresPrepare) {
-    Scene scene = make_spheres_scene();
-    RenderSettings settings;
-    settings.width = settings.height = 4;
-    Film film(4, 4);
-    EXPECT_THROW(WhittedIntegrator().render(scene, settings, film), std::logic_error);
 }

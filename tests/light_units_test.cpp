@@ -8,6 +8,7 @@
 #include "glint/assets/gltf_scene_loader.h"
 #include "glint/lights/light.h"
 #include "glint/math/constants.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -82,13 +83,13 @@ TEST(LightUnits, RenderedWhiteLambertianShowsTheDocumentedRadiance) {
     j["scenes"][0]["nodes"] = {0, 1, 2};
     glint::GltfScene s = glint::load_gltf_scene(glint_test::write_gltf(glint_test::temp_dir(), "quad", j));
     glint::Scene& scene = s.loaded.scene;
-    scene.prepare();
+    const glint::RenderScene prepared(std::move(scene));
     glint::RenderSettings settings;
     settings.width = settings.height = 3;
     glint::Film film(3, 3);
-    glint::WhittedIntegrator(1).render(scene, settings, film, {});
+    glint::WhittedIntegrator(1).render(prepared, settings, film, {});
     EXPECT_NEAR(film.at(1, 1).r, intensity / (glint::kPi * d * d), 2e-3f);
-    EXPECT_EQ(scene.ambient_light, glint::Color(0.0f)) << "files with lights get no ambient term";
+    EXPECT_EQ(prepared.ambient_light(), glint::Color(0.0f)) << "files with lights get no ambient term";
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "glint/image/film.h"
 #include "glint/integrators/whitted_integrator.h"
 #include "glint/scene_file.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -16,12 +17,12 @@ TEST(MeshScenes, StanfordMeshesRenderFinite) {
     if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes at " << dir;
     for (const char* name : {"stanford_bunny.ply", "stanford_lucy_100k.ply", "stanford_dragon_res2.ply", "stanford_dragon.ply"}) {
         glint::LoadedScene loaded = glint::load_scene_file(dir / name).loaded;
-        loaded.scene.prepare();
+        const glint::RenderScene prepared(std::move(loaded.scene));
         glint::RenderSettings settings;
         settings.width = 24;
         settings.height = 18;
         glint::Film film(settings.width, settings.height);
-        glint::WhittedIntegrator(2).render(loaded.scene, settings, film, {});
+        glint::WhittedIntegrator(2).render(prepared, settings, film, {});
         float lo = 1e30f, hi = -1e30f;
         bool finite = true;
         for (uint32_t y = 0; y < film.height(); ++y)

@@ -5,6 +5,7 @@
 
 #include "glint/assets/mesh_loader.h"
 #include "glint/scene_file.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -61,8 +62,9 @@ TEST(MeshLoader, DragonTwiceAsInstancesSharesOneMesh) {
     EXPECT_EQ(scene.objects()[0].shape, scene.objects()[1].shape) << "instances share one mesh";
     EXPECT_EQ(first.triangles + second.triangles, 2u * 871414u);
     EXPECT_EQ(scene.materials().size(), 1u) << "materials converted once";
-    EXPECT_EQ(scene.statistics().unique_triangles, 871414u);
-    EXPECT_EQ(scene.statistics().instanced_triangles, 2u * 871414u);
+    const glint::SceneStatistics stats = glint::RenderScene(std::move(scene)).statistics();
+    EXPECT_EQ(stats.unique_triangles, 871414u);
+    EXPECT_EQ(stats.instanced_triangles, 2u * 871414u);
 }
 
 TEST(MeshLoader, EachSceneWithItsOwnCacheReadsAFileOnce) {
@@ -155,8 +157,8 @@ TEST(MeshLoaderErrors, NanVerticesAreDroppedWithAWarning) {
     ASSERT_FALSE(result.warnings.empty());
     EXPECT_NE(result.warnings.front().find("nan.ply"), std::string::npos);
     EXPECT_NE(result.warnings.front().find("non-finite"), std::string::npos) << result.warnings.front();
-    scene.prepare();
-    EXPECT_TRUE(glint::is_finite(scene.bounds().lo) && glint::is_finite(scene.bounds().hi));
+    const glint::RenderScene prepared(std::move(scene));
+    EXPECT_TRUE(glint::is_finite(prepared.bounds().lo) && glint::is_finite(prepared.bounds().hi));
     EXPECT_THROW((void)glint::load_mesh_data(dir / "nan.ply"), glint::SceneError) << "the strict reader refuses it";
 }
 

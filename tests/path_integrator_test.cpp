@@ -7,6 +7,7 @@
 #include "glint/integrators/path_integrator.h"
 #include "glint/integrators/whitted_integrator.h"
 #include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -35,7 +36,7 @@ ImageStats red_channel_stats(const Film& film) {
     return {mean, std::sqrt(std::max(0.0, sum2 / count - mean * mean) / count)};
 }
 
-Film render(const Scene& scene, const Integrator& integrator, uint32_t size, uint32_t samples_per_axis,
+Film render(const RenderScene& scene, const Integrator& integrator, uint32_t size, uint32_t samples_per_axis,
             uint64_t seed = 0, uint32_t threads = 0) {
     RenderSettings settings;
     settings.width = settings.height = size;
@@ -50,7 +51,7 @@ Film render(const Scene& scene, const Integrator& integrator, uint32_t size, uin
 /// Inside a closed sphere of albedo a and emitted radiance Le, every ray sees
 /// L = Le + a·L, so L = Le/(1 − a): with a = Le = 0.5, radiance 1 (pbrt-v4's
 /// integrators_test furnace).
-Scene closed_furnace(bool emission_lights) {
+RenderScene closed_furnace(bool emission_lights) {
     Scene scene;
     Material m;
     m.diffuse = Color(0.5f);
@@ -58,8 +59,7 @@ Scene closed_furnace(bool emission_lights) {
     scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), scene.add_material(m));
     scene.emission_lights = emission_lights;
     scene.camera = Camera::perspective(Vec3(0.1f, 0.2f, 0.3f), Vec3(0, 0, -1), Vec3(0, 1, 0), 90.0f);
-    scene.prepare();
-    return scene;
+    return RenderScene(std::move(scene));
 }
 
 }  // namespace
@@ -68,7 +68,7 @@ TEST(PathFurnace, ClosedEmissiveSphereAveragesOne) {
     // 1 − 0.5^65 of the energy is within depth 64; Russian roulette keeps the estimate unbiased.
     for (const bool nee : {true, false}) {
         for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance}) {
-            const Scene scene = closed_furnace(nee);
+            const RenderScene scene = closed_furnace(nee);
             const Film film = render(scene, PathIntegrator(64, h), 16, 4);
             const ImageStats s = red_channel_stats(film);
             EXPECT_NEAR(s.mean, 1.0, 4.0 * s.stderr_ + 1e-4)
@@ -85,8 +85,8 @@ TEST(PathFurnace, WhiteDiffuseSphereVanishesUnderAUniformWhiteSky) {
     scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), scene.add_material(white));
     scene.background = Background::constant(Color(1.0f));
     scene.camera = Camera::perspective(Vec3(0, 0, 4), Vec3(0, 0, 0), Vec3(0, 1, 0), 40.0f);
-    scene.prepare();
-    const Film film = render(scene, PathIntegrator(8), 12, 2);
+    const RenderScene prepared(std::move(scene));
+    const Film film = render(prepared, PathIntegrator(8), 12, 2);
     for (uint32_t y = 0; y < 12; ++y)
         for (uint32_t x = 0; x < 12; ++x) EXPECT_NEAR(film.at(x, y).r, 1.0f, 1e-4f) << x << "," << y;
 }
@@ -115,14 +115,13 @@ Scene specular_scene() {
     scene.background = Background::constant(Color(0.2f, 0.4f, 0.8f));
     scene.emission_lights = false;
     scene.camera = Camera::perspective(Vec3(0, 0.3f, 3), Vec3(0, 0, 0), Vec3(0, 1, 0), 50.0f);
-    scene.prepare();
     return scene;
 }
 
 }  // namespace
 
 TEST(PathVersusWhitted, AgreeOnAPurelySpecularScene) {
-    const Scene scene = specular_scene();
+    const RenderScene scene(specular_scene());
     constexpr uint32_t kSize = 12;
     // The path tracer chooses one branch at each glass hit: average independent renders and
     // compare each pixel with a bound from their spread. Whitted renders with the same seeds,
@@ -167,15 +166,15 @@ TEST(PathVersusWhitted, BothAreIdenticalForAnyThreadCountWithAreaLights) {
     scene.add_object(std::make_shared<Quad>(Vec3(-3, -0.5f, 3), Vec3(6, 0, 0), Vec3(0, 0, -6)), scene.add_material(white));
     scene.add_area_light(std::make_shared<Sphere>(Vec3(1, 2, 1), 0.4f), Emitter{Color(4.0f), false});
     scene.emission_lights = true;
-    scene.prepare();
+    const RenderScene prepared(std::move(scene));
     for (const char* name : {"whitted", "path"}) {
         RenderSettings settings;
         settings.integrator = name;
         settings.light_samples = 4;
         const auto integrator = make_integrator(settings);
-        const Film one = render(scene, *integrator, 20, 2, 5, 1);
-        const Film two = render(scene, *integrator, 20, 2, 5, 2);
-        const Film other_seed = render(scene, *integrator, 20, 2, 6, 2);
+        const Film one = render(prepared, *integrator, 20, 2, 5, 1);
+        const Film two = render(prepared, *integrator, 20, 2, 5, 2);
+        const Film other_seed = render(prepared, *integrator, 20, 2, 6, 2);
         bool identical = true, differs = false;
         for (uint32_t y = 0; y < 20; ++y)
             for (uint32_t x = 0; x < 20; ++x) {
@@ -203,9 +202,10 @@ TEST(IntegratorRegistry, MakesEachByNameAndRejectsUnknownNames) {
 }
 
 TEST(PathIntegrator, WarnsThatItIgnoresTheAmbientTerm) {
-    Scene scene;
-    EXPECT_TRUE(PathIntegrator().warnings(scene).empty());
-    scene.ambient_light = Color(0.1f);
+    EXPECT_TRUE(PathIntegrator().warnings(RenderScene(Scene())).empty());
+    Scene ambient;
+    ambient.ambient_light = Color(0.1f);
+    const RenderScene scene(std::move(ambient));
     ASSERT_EQ(PathIntegrator().warnings(scene).size(), 1u);
     EXPECT_TRUE(WhittedIntegrator().warnings(scene).empty());
 }

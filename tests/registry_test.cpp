@@ -6,6 +6,7 @@
 
 #include "glint/scene/scene.h"
 #include "glint/scene_format/registry.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -57,13 +58,13 @@ TEST(Registry, EveryShapeTypeBuildsAnObjectThatRaysHit) {
         LoadedScene s = load(std::string(kMaterial) + typed("objects", type.name, kShapeExamples.at(type.name)) +
                              "material = \"m\"\n");
         ASSERT_EQ(s.scene.objects().size(), 1u) << type.name;
-        s.scene.prepare();
+        const RenderScene prepared(std::move(s.scene));
         // Every example holds the centre of its bounds: a ray from afar towards it hits.
-        const Vec3 target = s.scene.bounds().center();
+        const Vec3 target = prepared.bounds().center();
         const Vec3 origin = target + Vec3(1.0f, 2.0f, 3.0f) * 10.0f;
         Ray ray(origin, target - origin);
         Hit hit;
-        EXPECT_TRUE(s.scene.intersect(ray, hit)) << type.name;
+        EXPECT_TRUE(prepared.intersect(ray, hit)) << type.name;
     }
 }
 
@@ -71,9 +72,9 @@ TEST(Registry, EveryLightTypeLightsAPointBelowIt) {
     for (const LightType& type : light_types()) {
         ASSERT_TRUE(kLightExamples.count(type.name)) << "add an example of light '" << type.name << "' here";
         LoadedScene s = load(typed("lights", type.name, kLightExamples.at(type.name)));
-        s.scene.prepare();
-        ASSERT_EQ(s.scene.all_lights().size(), 1u) << type.name;
-        const LightSample ls = s.scene.all_lights()[0]->sample(Vec3(0.0f), Vec2(0.3f, 0.6f));
+        const RenderScene prepared(std::move(s.scene));
+        ASSERT_EQ(prepared.all_lights().size(), 1u) << type.name;
+        const LightSample ls = prepared.all_lights()[0]->sample(Vec3(0.0f), Vec2(0.3f, 0.6f));
         EXPECT_FALSE(ls.radiance.is_black()) << type.name;
         EXPECT_GT(ls.direction.y, 0.0f) << type.name << ": the light is above the point";
     }

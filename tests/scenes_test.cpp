@@ -17,6 +17,7 @@
 #include "glint/integrators/integrator_registry.h"
 #include "glint/scene_format/toml_scene_loader.h"
 #include "glint/scene/default_scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -86,9 +87,9 @@ std::ostream& operator<<(std::ostream& os, const ImageDifference& d) {
 Image render(LoadedScene& loaded) {
     loaded.settings.width = kWidth;
     loaded.settings.height = kHeight;
-    loaded.scene.prepare();
+    const RenderScene prepared(std::move(loaded.scene));
     Film film(kWidth, kHeight);
-    make_integrator(loaded.settings)->render(loaded.scene, loaded.settings, film);
+    make_integrator(loaded.settings)->render(prepared, loaded.settings, film);
     return film.to_image();
 }
 

@@ -3,6 +3,7 @@
 
 #include "glint/image/filter.h"
 #include "glint/integrators/integrator_registry.h"
+#include "glint/scene/render_scene.h"
 #include "toml_text.h"
 
 #include <gtest/gtest.h>
@@ -20,15 +21,15 @@ TEST(TomlAreaLights, SphereQuadAndDiskBecomeLightsAndObjects) {
                          "type = \"quad\"\ncorner = [-1, 2, -1]\nedge_u = [2, 0, 0]\nedge_v = [0, 0, 2]\n"
                          "radiance = [1, 2, 3]\ntwo_sided = true\n" +
                          std::string(kLight) + "type = \"disk\"\ncenter = [0, 1, 0]\nradius = 0.25\n");
-    s.scene.prepare();
-    ASSERT_EQ(s.scene.objects().size(), 3u);
-    ASSERT_EQ(s.scene.area_lights().size(), 3u);
-    EXPECT_EQ(s.scene.area_lights()[0]->radiance(), Color(4.0f));
-    EXPECT_EQ(s.scene.area_lights()[1]->radiance(), Color(1, 2, 3));
-    EXPECT_TRUE(s.scene.area_lights()[1]->two_sided());
-    EXPECT_FALSE(s.scene.area_lights()[2]->two_sided());
+    const RenderScene prepared(std::move(s.scene));
+    ASSERT_EQ(prepared.description().objects().size(), 3u);
+    ASSERT_EQ(prepared.area_lights().size(), 3u);
+    EXPECT_EQ(prepared.area_lights()[0]->radiance(), Color(4.0f));
+    EXPECT_EQ(prepared.area_lights()[1]->radiance(), Color(1, 2, 3));
+    EXPECT_TRUE(prepared.area_lights()[1]->two_sided());
+    EXPECT_FALSE(prepared.area_lights()[2]->two_sided());
     // The disk faces down by default: it lights a point under it, not one above.
-    const Light& disk = *s.scene.area_lights()[2];
+    const Light& disk = *prepared.area_lights()[2];
     EXPECT_FALSE(disk.sample(Vec3(0, 0, 0), Vec2(0.3f, 0.6f)).radiance.is_black());
     EXPECT_TRUE(disk.sample(Vec3(0, 2, 0), Vec2(0.3f, 0.6f)).radiance.is_black());
     EXPECT_TRUE(s.warnings.empty());
@@ -38,12 +39,12 @@ TEST(TomlAreaLights, EmissiveObjectsAreLightsUnlessTheWorldSaysNo) {
     const std::string scene =
         "[[materials]]\nname = \"lamp\"\nemission = 2\n[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"lamp\"\n";
     LoadedScene lit = load(scene);
-    lit.scene.prepare();
-    EXPECT_EQ(lit.scene.area_lights().size(), 1u);
+    const RenderScene prepared(std::move(lit.scene));
+    EXPECT_EQ(prepared.area_lights().size(), 1u);
     EXPECT_TRUE(lit.warnings.empty()) << "an emissive object lights the scene: no 'unlit' warning";
     LoadedScene seen = load("[world]\nemission_lights = false\n" + scene);
-    seen.scene.prepare();
-    EXPECT_TRUE(seen.scene.area_lights().empty());
+    const RenderScene prepared2(std::move(seen.scene));
+    EXPECT_TRUE(prepared2.area_lights().empty());
 }
 
 TEST(TomlAreaLights, Mistakes) {
@@ -97,9 +98,9 @@ TEST(Dielectrics, WaterLooksTheSameWhicheverWayItsQuadIsWound) {
     settings.width = settings.height = 24;
     auto render = [&](bool normal_up) {
         LoadedScene s = load(water_scene(normal_up));
-        s.scene.prepare();
+        const RenderScene prepared(std::move(s.scene));
         Film film(settings.width, settings.height);
-        make_integrator(settings)->render(s.scene, settings, film);
+        make_integrator(settings)->render(prepared, settings, film);
         return film;
     };
     const Film up = render(true), down = render(false);

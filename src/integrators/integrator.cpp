@@ -1,7 +1,7 @@
 #include "glint/integrators/integrator.h"
 
 #include "glint/image/filter.h"
-#include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -19,9 +19,8 @@ constexpr uint32_t kTileSize = 16;
 
 }  // namespace
 
-RenderStats Integrator::render(const Scene& scene, const RenderSettings& settings, Film& film,
+RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                                const ProgressCallback& progress) const {
-    if (!scene.prepared()) throw std::logic_error("Scene::prepare() must be called before rendering");
     if (settings.samples_per_axis == 0) throw std::invalid_argument("samples per axis must be at least 1");
     const Filter filter(settings.filter, settings.filter_radius);
     const auto start = std::chrono::steady_clock::now();
@@ -45,7 +44,7 @@ RenderStats Integrator::render(const Scene& scene, const RenderSettings& setting
                     const FilterSample fs = filter.sample(sampler.pixel_2d());
                     const float fx = (float(x) + 0.5f) + fs.offset.x;
                     const float fy = (float(y) + 0.5f) + fs.offset.y;
-                    const Ray ray = scene.camera.generate_ray(fx, fy, int(width), int(height));
+                    const Ray ray = scene.camera().generate_ray(fx, fy, int(width), int(height));
                     film.add_sample(x, y, Li(scene, ray, context), fs.weight);
                 }
         rays += context.rays;

@@ -2,7 +2,7 @@
 
 #include "glint/integrators/shading_point.h"
 #include "glint/math/offset_ray.h"
-#include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,9 +20,9 @@ std::unique_ptr<Integrator> PathIntegrator::create(const RenderSettings& setting
     return std::make_unique<PathIntegrator>(settings.max_depth, settings.mis);
 }
 
-std::vector<std::string> PathIntegrator::warnings(const Scene& scene) const {
+std::vector<std::string> PathIntegrator::warnings(const RenderScene& scene) const {
     std::vector<std::string> out;
-    if (!scene.ambient_light.is_black())
+    if (!scene.ambient_light().is_black())
         out.emplace_back(
             "the path integrator ignores [world] ambient_light: ambient is a Whitted term; light comes from lights, "
             "emission and the background");
@@ -35,14 +35,14 @@ float PathIntegrator::mis_weight(float pdf_a, float pdf_b) const {
     return a2 / (a2 + b2);
 }
 
-Color PathIntegrator::Li(const Scene& scene, const Ray& camera_ray, TraceContext& context) const {
+Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceContext& context) const {
     Sampler& sampler = context.sampler;
     const std::vector<const Light*>& lights = scene.all_lights();
     const float light_choice_pdf = lights.empty() ? 0.0f : 1.0f / float(lights.size());
 
     Color radiance, throughput(1.0f);
     Ray ray = camera_ray;
-    IorStack media(scene.ambient_ior);
+    IorStack media(scene.ambient_ior());
     // The previous bounce: was it a delta lobe, its BSDF density and where it was.
     bool specular_bounce = true;
     float bsdf_pdf = 0.0f;
@@ -54,7 +54,7 @@ Color PathIntegrator::Li(const Scene& scene, const Ray& camera_ray, TraceContext
         Hit hit;
         if (!scene.intersect(r, hit)) {
             // The background is not sampled as a light, so what BSDF sampling finds counts in full.
-            radiance += throughput * scene.background.evaluate(ray.direction);
+            radiance += throughput * scene.background().evaluate(ray.direction);
             break;
         }
         const SurfaceInteraction si = scene.interaction(r, hit);

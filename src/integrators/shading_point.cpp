@@ -1,13 +1,13 @@
 #include "glint/integrators/shading_point.h"
 
 #include "glint/math/offset_ray.h"
-#include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <cmath>
 
 namespace glint {
 
-ShadingPoint shading_point(const Scene& scene, const SurfaceInteraction& si, const Ray& ray, const IorStack& media) {
+ShadingPoint shading_point(const RenderScene& scene, const SurfaceInteraction& si, const Ray& ray, const IorStack& media) {
     ShadingPoint sp;
     sp.medium = si.materials[0];
     if (si.blends_materials) {

@@ -2,7 +2,7 @@
 
 #include "glint/integrators/shading_point.h"
 #include "glint/math/offset_ray.h"
-#include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <array>
 #include <cmath>
@@ -14,11 +14,11 @@ std::unique_ptr<Integrator> WhittedIntegrator::create(const RenderSettings& sett
     return std::make_unique<WhittedIntegrator>(settings.max_depth, settings.light_samples);
 }
 
-Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& context) const {
-    return trace(scene, ray, 0, IorStack(scene.ambient_ior), context);
+Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const {
+    return trace(scene, ray, 0, IorStack(scene.ambient_ior()), context);
 }
 
-Color WhittedIntegrator::direct_light(const Scene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
+Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                       const Vec3& ng, TraceContext& context) const {
     Color sum;
     auto add = [&](const LightSample& ls, float weight) {
@@ -48,12 +48,12 @@ Color WhittedIntegrator::direct_light(const Scene& scene, const Bsdf& bsdf, cons
     return sum;
 }
 
-Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
+Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
                                TraceContext& context) const {
     ++context.rays;
     Ray r = ray;
     Hit hit;
-    if (!scene.intersect(r, hit)) return scene.background.evaluate(ray.direction);
+    if (!scene.intersect(r, hit)) return scene.background().evaluate(ray.direction);
 
     const SurfaceInteraction si = scene.interaction(r, hit);
     const ShadingPoint sp = shading_point(scene, si, ray, media);
@@ -65,7 +65,7 @@ Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, uint32_t dept
     const float t = std::clamp(m.transparency, 0.0f, 1.0f);
     if (t < 1.0f) {
         // Whitted's ambient term: ka·La, textured like the diffuse term; no BSDF lobe.
-        radiance += texture * m.ambient * scene.ambient_light * (1.0f - t);
+        radiance += texture * m.ambient * scene.ambient_light() * (1.0f - t);
         radiance += direct_light(scene, bsdf, si, sp.ng, context);
     }
     if (depth >= max_depth_) return radiance;

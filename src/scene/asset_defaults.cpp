@@ -6,13 +6,6 @@
 
 namespace glint {
 
-Bounds3 object_bounds(const Scene& scene) {
-    Bounds3 b;
-    for (const SceneObject& o : scene.objects())
-        b.extend(o.has_transform ? o.world_from_object.bounds(o.shape->bounds()) : o.shape->bounds());
-    return b;
-}
-
 Camera framing_camera(const Bounds3& bounds, float aspect) {
     const Vec3 center = bounds.empty() ? Vec3(0.0f) : bounds.center();
     const float radius = bounds.empty() ? 1.0f : std::max(0.5f * length(bounds.diagonal()), 1e-6f);

@@ -14,7 +14,7 @@
 
 namespace glint {
 
-class Scene;
+class RenderScene;
 
 struct RenderStats {
     /// Every ray cast into the scene: camera, reflection, refraction and shadow rays.
@@ -38,14 +38,14 @@ public:
     /// Add settings.samples_per_axis² samples per pixel of the prepared scene to `film`, in
     /// parallel 16×16 tiles, each weighted by settings.filter. The result does not depend on
     /// the thread count: every sample is a function of (seed, pixel, sample index).
-    RenderStats render(const Scene& scene, const RenderSettings& settings, Film& film,
+    RenderStats render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                        const ProgressCallback& progress = {}) const;
 
     /// Radiance arriving at the camera along `ray`.
-    [[nodiscard]] virtual Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const = 0;
+    [[nodiscard]] virtual Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const = 0;
 
     /// One line for each part of `scene` this integrator ignores (shown before rendering).
-    [[nodiscard]] virtual std::vector<std::string> warnings(const Scene& scene) const {
+    [[nodiscard]] virtual std::vector<std::string> warnings(const RenderScene& scene) const {
         (void)scene;
         return {};
     }

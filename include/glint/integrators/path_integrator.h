@@ -22,8 +22,8 @@ public:
     /// The registry's factory: max_depth and mis from the settings.
     [[nodiscard]] static std::unique_ptr<Integrator> create(const RenderSettings& settings);
 
-    [[nodiscard]] Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const override;
-    [[nodiscard]] std::vector<std::string> warnings(const Scene& scene) const override;
+    [[nodiscard]] Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const override;
+    [[nodiscard]] std::vector<std::string> warnings(const RenderScene& scene) const override;
 
 private:
     /// Weight of a sample drawn with density `pdf_a` against another strategy's `pdf_b`.

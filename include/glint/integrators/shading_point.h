@@ -15,7 +15,7 @@
 
 namespace glint {
 
-class Scene;
+class RenderScene;
 
 struct ShadingPoint {
     /// The material at the hit; a blended copy only for per-vertex materials.
@@ -36,7 +36,7 @@ struct ShadingPoint {
 /// decided by the stack of media: a material the ray is not inside is being entered,
 /// whatever the winding of the surface (open or inward-wound glass is glass, not a mirror);
 /// only a stack that lost track of an entry leaves the decision to the winding.
-[[nodiscard]] ShadingPoint shading_point(const Scene& scene, const SurfaceInteraction& si, const Ray& ray,
+[[nodiscard]] ShadingPoint shading_point(const RenderScene& scene, const SurfaceInteraction& si, const Ray& ray,
                                          const IorStack& media);
 
 /// Texture colour multiplying kd at the hit (white without a texture, or for a fully

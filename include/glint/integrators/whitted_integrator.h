@@ -24,15 +24,15 @@ public:
     /// The registry's factory: max_depth and light_samples from the settings.
     [[nodiscard]] static std::unique_ptr<Integrator> create(const RenderSettings& settings);
 
-    [[nodiscard]] Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const override;
+    [[nodiscard]] Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const override;
 
     /// Radiance along `ray` at recursion `depth` inside the media of `media`.
-    [[nodiscard]] Color trace(const Scene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
+    [[nodiscard]] Color trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
                               TraceContext& context) const;
 
 private:
     /// Σ over lights of the BSDF's smooth lobes times the visible light (f·L·cosθ/pdf).
-    [[nodiscard]] Color direct_light(const Scene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
+    [[nodiscard]] Color direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                      const Vec3& ng, TraceContext& context) const;
 
     uint32_t max_depth_;

@@ -6,9 +6,6 @@
 
 namespace glint {
 
-/// World bounds of every object, computed from shape bounds (valid before prepare()).
-[[nodiscard]] Bounds3 object_bounds(const Scene& scene);
-
 /// A 40° perspective camera that sees all of `bounds` (a sphere around it fits the smaller
 /// field of view for images of `aspect` = width/height), looking along -z from slightly above.
 [[nodiscard]] Camera framing_camera(const Bounds3& bounds, float aspect);

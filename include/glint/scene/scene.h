@@ -1,10 +1,9 @@
 #pragma once
-/// \file The scene: objects (shapes placed by transforms), materials, lights, camera,
-/// background, and the top-level acceleration structure built by prepare().
+/// \file The scene description: objects (shapes placed by transforms), materials, lights,
+/// camera and background, as loaders and programs build it. Rendering reads the
+/// RenderScene made from it (scene/render_scene.h), never the description itself.
 
-#include "glint/accel/bvh.h"
 #include "glint/geometry/shape.h"
-#include "glint/lights/area_light.h"
 #include "glint/lights/light.h"
 #include "glint/materials/material.h"
 #include "glint/materials/texture.h"
@@ -37,25 +36,18 @@ struct Emitter {
 /// One placement of a shape in the world.
 struct SceneObject {
     std::shared_ptr<Shape> shape;
+    /// Identity unless has_transform.
     Transform world_from_object;
-    /// Its inverse, kept so that every ray query need not invert.
-    Transform object_from_world;
     bool has_transform = false;
     uint32_t material = 0;
     std::string name;
     /// Set for objects that are declared lights; others emit if their material does.
     std::optional<Emitter> emitter;
-    /// Index into Scene::area_lights() of the light this object is (−1: none); set by prepare().
-    int32_t area_light = -1;
-};
 
-/// Counts for `glint info` and the final render line.
-struct SceneStatistics {
-    std::size_t objects = 0;
-    std::size_t unique_shapes = 0;
-    std::size_t unique_triangles = 0;     ///< triangles stored
-    std::size_t instanced_triangles = 0;  ///< triangles as placed in the world
-    std::size_t memory_bytes = 0;         ///< shapes + acceleration structures
+    /// World bounds, from the shape's object-space bounds.
+    [[nodiscard]] Bounds3 world_bounds() const {
+        return has_transform ? world_from_object.bounds(shape->bounds()) : shape->bounds();
+    }
 };
 
 class Scene {
@@ -92,21 +84,14 @@ public:
     void add_light(std::unique_ptr<Light> light);
     /// The lights added with add_light().
     [[nodiscard]] const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
-    /// Area lights: the declared ones and, with `emission_lights`, every emissive object
-    /// whose shape has an area (valid after prepare()).
-    [[nodiscard]] const std::vector<std::unique_ptr<AreaLight>>& area_lights() const { return area_lights_; }
-    /// Every light, point-like first, then area lights (valid after prepare()).
-    [[nodiscard]] const std::vector<const Light*>& all_lights() const { return all_lights_; }
-    /// The area light that object `object` is, if any (valid after prepare()).
-    [[nodiscard]] const AreaLight* area_light_of(uint32_t object) const {
-        const int32_t i = object_lights_[object];
-        return i < 0 ? nullptr : area_lights_[std::size_t(i)].get();
-    }
-    /// True if the scene has a light or an object that emits (before or after prepare()).
+    /// Does object `object` light the scene: a declared area light, or (with
+    /// `emission_lights`) an object whose material has an emission.
+    [[nodiscard]] bool emits_light(const SceneObject& object) const;
+    /// True if the scene has a light or an object that emits.
     [[nodiscard]] bool has_emitters() const;
 
     /// Place `shape` with `material`; several objects may share one shape (instancing).
-    /// Returns the object's index. Invalidates prepare().
+    /// Returns the object's index.
     uint32_t add_object(std::shared_ptr<Shape> shape, uint32_t material,
                         const std::optional<Transform>& world_from_object = std::nullopt, std::string name = {});
     [[nodiscard]] const std::vector<SceneObject>& objects() const { return objects_; }
@@ -115,48 +100,14 @@ public:
     uint32_t add_area_light(std::shared_ptr<Shape> shape, const Emitter& emitter,
                             const std::optional<Transform>& world_from_object = std::nullopt, std::string name = {});
 
-    /// Build every shape's own structure (in parallel) and the top-level BVH over objects.
-    /// Must be called after the last change and before any query.
-    void prepare();
-    [[nodiscard]] bool prepared() const { return prepared_; }
-
-    /// Closest hit in world space; fills hit.object too.
-    bool intersect(Ray& ray, Hit& hit) const;
-    /// Any hit that blocks light (dielectrics per `dielectric_shadows`, alpha cut-outs skipped).
-    [[nodiscard]] bool occluded(const Ray& ray) const { return occluded(ray, dielectric_shadows); }
-    /// Any hit that blocks light, with dielectrics treated as `mode` says.
-    [[nodiscard]] bool occluded(const Ray& ray, DielectricShadows mode) const;
-    /// Radiance that the surface of the object hit emits towards `wo` (unit, away from the
-    /// surface): its area light's, or the material's emission where it is no light.
-    [[nodiscard]] Color emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const;
-    /// World-space surface description of a hit returned by intersect().
-    [[nodiscard]] SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
-
-    /// World bounds of all objects (valid after prepare()).
-    [[nodiscard]] Bounds3 bounds() const { return top_level_.bounds(); }
-    [[nodiscard]] SceneStatistics statistics() const;
+    /// World bounds of all objects.
+    [[nodiscard]] Bounds3 world_bounds() const;
 
 private:
-    bool intersect_object(uint32_t object, Ray& ray, Hit& hit) const;
-    bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode) const;
-    /// Does `o` emit light into the scene: a declared area light, or (with emission_lights)
-    /// an object whose material has an emission.
-    [[nodiscard]] bool lights_scene(const SceneObject& o) const;
-    void build_area_lights();
-
     std::vector<Material> materials_;
     std::vector<std::unique_ptr<Texture>> textures_;
     std::vector<std::unique_ptr<Light>> lights_;
     std::vector<SceneObject> objects_;
-    std::vector<std::unique_ptr<AreaLight>> area_lights_;
-    std::vector<const Light*> all_lights_;
-    /// Per object, its area light's index or −1: a compact copy of SceneObject::area_light
-    /// for the lookup at every hit (a SceneObject is a few hundred bytes).
-    std::vector<int32_t> object_lights_;
-    /// Per object: is its material a dielectric (derived in prepare(), for shadow rays).
-    std::vector<uint8_t> dielectric_;
-    Bvh top_level_;
-    bool prepared_ = false;
 };
 
 }  // namespace glint

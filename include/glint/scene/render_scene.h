@@ -1,0 +1,95 @@
+#pragma once
+/// \file What the integrators read: a scene prepared for rendering. Made once from a
+/// Scene description, which it keeps read-only; to render a changed scene, prepare the
+/// changed description again. Integrators take nothing else, so nothing can be rendered
+/// unprepared and no change after preparing can be silently ignored.
+
+#include "glint/accel/bvh.h"
+#include "glint/lights/area_light.h"
+#include "glint/scene/scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace glint {
+
+/// Counts for `glint info` and the final render line.
+struct SceneStatistics {
+    std::size_t objects = 0;
+    std::size_t unique_shapes = 0;
+    std::size_t unique_triangles = 0;     ///< triangles stored
+    std::size_t instanced_triangles = 0;  ///< triangles as placed in the world
+    std::size_t memory_bytes = 0;         ///< shapes + acceleration structures
+};
+
+class RenderScene {
+public:
+    /// Build every shape's own structure (in parallel), the area lights, and the top-level
+    /// BVH over the objects (pbrt-v4's BasicScene → aggregate and lights).
+    explicit RenderScene(Scene description);
+    RenderScene(RenderScene&&) noexcept;
+    RenderScene& operator=(RenderScene&&) noexcept;
+    ~RenderScene();
+
+    /// The description this was prepared from.
+    [[nodiscard]] const Scene& description() const { return scene_; }
+    [[nodiscard]] const Camera& camera() const { return scene_.camera; }
+    [[nodiscard]] const Background& background() const { return scene_.background; }
+    [[nodiscard]] const Color& ambient_light() const { return scene_.ambient_light; }
+    [[nodiscard]] float ambient_ior() const { return scene_.ambient_ior; }
+    [[nodiscard]] DielectricShadows dielectric_shadows() const { return scene_.dielectric_shadows; }
+    [[nodiscard]] const Material& material(uint32_t index) const { return scene_.material(index); }
+
+    /// Area lights: the declared ones and, with `emission_lights`, every emissive object
+    /// whose shape has an area.
+    [[nodiscard]] const std::vector<std::unique_ptr<AreaLight>>& area_lights() const { return area_lights_; }
+    /// Every light, point-like first, then area lights.
+    [[nodiscard]] const std::vector<const Light*>& all_lights() const { return all_lights_; }
+    /// The area light that object `object` is, if any.
+    [[nodiscard]] const AreaLight* area_light_of(uint32_t object) const {
+        const int32_t i = objects_[object].area_light;
+        return i < 0 ? nullptr : area_lights_[std::size_t(i)].get();
+    }
+
+    /// Closest hit in world space; fills hit.object too.
+    bool intersect(Ray& ray, Hit& hit) const;
+    /// Any hit that blocks light (dielectrics per `dielectric_shadows`, alpha cut-outs skipped).
+    [[nodiscard]] bool occluded(const Ray& ray) const { return occluded(ray, scene_.dielectric_shadows); }
+    /// Any hit that blocks light, with dielectrics treated as `mode` says.
+    [[nodiscard]] bool occluded(const Ray& ray, DielectricShadows mode) const;
+    /// World-space surface description of a hit returned by intersect().
+    [[nodiscard]] SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
+    /// Radiance that the surface of the object hit emits towards `wo` (unit, away from the
+    /// surface): its area light's, or the material's emission where it is no light.
+    [[nodiscard]] Color emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const;
+
+    /// World bounds of all objects.
+    [[nodiscard]] Bounds3 bounds() const { return top_level_.bounds(); }
+    [[nodiscard]] SceneStatistics statistics() const;
+
+private:
+    /// What a ray query needs of an object, packed for the top-level traversal; the rest
+    /// (world_from_object, name) stays in the description.
+    struct HotObject {
+        const Shape* shape = nullptr;
+        /// Valid when `transformed`: rays go into object space by this (t is kept).
+        Transform object_from_world;
+        bool transformed = false;
+        /// Its material is a dielectric (for shadow rays under DielectricShadows::None).
+        bool dielectric = false;
+        /// Index into area_lights_ (−1: none).
+        int32_t area_light = -1;
+    };
+
+    void build_area_lights();
+    bool intersect_object(uint32_t object, Ray& ray, Hit& hit) const;
+    bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode) const;
+
+    Scene scene_;
+    std::vector<HotObject> objects_;
+    std::vector<std::unique_ptr<AreaLight>> area_lights_;
+    std::vector<const Light*> all_lights_;
+    Bvh top_level_;
+};
+
+}  // namespace glint

@@ -1,0 +1,138 @@
+#include "glint/scene/render_scene.h"
+
+#include <tbb/parallel_for_each.h>
+
+#include <unordered_set>
+
+namespace glint {
+
+RenderScene::RenderScene(Scene description) : scene_(std::move(description)) {
+    const std::vector<SceneObject>& objects = scene_.objects();
+    std::vector<Shape*> unique;
+    {
+        std::unordered_set<Shape*> seen;
+        for (const SceneObject& o : objects)
+            if (seen.insert(o.shape.get()).second) unique.push_back(o.shape.get());
+    }
+    tbb::parallel_for_each(unique.begin(), unique.end(), [](Shape* shape) { shape->prepare(); });
+
+    std::vector<Bounds3> boxes(objects.size());
+    objects_.resize(objects.size());
+    for (size_t i = 0; i < objects.size(); ++i) {
+        const SceneObject& o = objects[i];
+        HotObject& hot = objects_[i];
+        hot.shape = o.shape.get();
+        if (o.has_transform) {
+            hot.object_from_world = o.world_from_object.inverse();
+            hot.transformed = true;
+        }
+        hot.dielectric = o.material < scene_.materials().size() && scene_.material(o.material).is_dielectric();
+        boxes[i] = o.world_bounds();
+    }
+    build_area_lights();
+    // Top level: few, large primitives; one per leaf keeps every object test behind a box test.
+    BvhBuildConfig config;
+    config.max_leaf_size = 1;
+    top_level_.build(boxes, config);
+}
+
+RenderScene::RenderScene(RenderScene&&) noexcept = default;
+RenderScene& RenderScene::operator=(RenderScene&&) noexcept = default;
+RenderScene::~RenderScene() = default;
+
+void RenderScene::build_area_lights() {
+    const std::vector<SceneObject>& objects = scene_.objects();
+    for (size_t i = 0; i < objects.size(); ++i) {
+        const SceneObject& o = objects[i];
+        if (!scene_.emits_light(o)) continue;
+        const std::optional<Transform> transform =
+            o.has_transform ? std::optional<Transform>(o.world_from_object) : std::nullopt;
+        if (o.emitter) {
+            area_lights_.push_back(
+                std::make_unique<AreaLight>(o.shape, transform, o.emitter->radiance, nullptr, o.emitter->two_sided));
+        } else {
+            o.shape->prepare_sampling();
+            // A shape without area (a heightfield) keeps its emission visible only.
+            if (!(o.shape->area() > 0.0f)) continue;
+            const Material& m = scene_.material(o.material);
+            // Glint's surfaces are two-sided, and so is what they emit.
+            area_lights_.push_back(std::make_unique<AreaLight>(o.shape, transform, m.emission, m.emission_texture, true));
+        }
+        objects_[i].area_light = int32_t(area_lights_.size() - 1);
+    }
+    for (const auto& l : scene_.lights()) all_lights_.push_back(l.get());
+    for (const auto& l : area_lights_) all_lights_.push_back(l.get());
+}
+
+Color RenderScene::emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const {
+    if (const AreaLight* light = area_light_of(object)) return light->emitted(si.p, si.geometric_normal, si.uv, wo);
+    Color le = m.emission;
+    if (m.emission_texture) le *= m.emission_texture->evaluate(si.uv, si.p);
+    return le;
+}
+
+bool RenderScene::intersect_object(uint32_t index, Ray& ray, Hit& hit) const {
+    const HotObject& o = objects_[index];
+    if (!o.transformed) {
+        if (!o.shape->intersect(ray, hit)) return false;
+    } else {
+        // Transform the ray into object space without renormalising: t is the same in both.
+        Ray local = o.object_from_world.ray(ray);
+        if (!o.shape->intersect(local, hit)) return false;
+        ray.tmax = local.tmax;
+    }
+    hit.object = index;
+    return true;
+}
+
+bool RenderScene::occluded_by_object(uint32_t index, const Ray& ray, DielectricShadows mode) const {
+    const HotObject& o = objects_[index];
+    if (o.dielectric && mode == DielectricShadows::None) return false;
+    return o.transformed ? o.shape->occluded(o.object_from_world.ray(ray)) : o.shape->occluded(ray);
+}
+
+bool RenderScene::intersect(Ray& ray, Hit& hit) const {
+    return top_level_.traverse<false>(ray, [&](uint32_t object, Ray& r) { return intersect_object(object, r, hit); });
+}
+
+bool RenderScene::occluded(const Ray& ray, DielectricShadows mode) const {
+    Ray r = ray;
+    return top_level_.traverse<true>(r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr, mode); });
+}
+
+SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {
+    const HotObject& hot = objects_[hit.object];
+    const SceneObject& o = scene_.objects()[hit.object];
+    SurfaceInteraction si;
+    if (!hot.transformed) {
+        o.shape->interaction(ray, hit, si);
+    } else {
+        o.shape->interaction(hot.object_from_world.ray(ray), hit, si);
+        si.p = o.world_from_object.point(si.p);
+        si.geometric_normal = normalize(o.world_from_object.normal(si.geometric_normal));
+        si.shading_normal = normalize(o.world_from_object.normal(si.shading_normal));
+        si.front_face = dot(ray.direction, si.geometric_normal) < 0.0f;
+    }
+    if (!si.blends_materials) si.materials[0] = o.material;
+    return si;
+}
+
+SceneStatistics RenderScene::statistics() const {
+    SceneStatistics s;
+    const std::vector<SceneObject>& objects = scene_.objects();
+    s.objects = objects.size();
+    std::unordered_set<const Shape*> seen;
+    for (const SceneObject& o : objects) {
+        const bool triangles = o.shape->type_name() == "mesh";
+        if (triangles) s.instanced_triangles += o.shape->primitive_count();
+        if (seen.insert(o.shape.get()).second) {
+            ++s.unique_shapes;
+            if (triangles) s.unique_triangles += o.shape->primitive_count();
+            s.memory_bytes += o.shape->memory_bytes();
+        }
+    }
+    s.memory_bytes += top_level_.memory_bytes() + objects_.size() * sizeof(HotObject);
+    return s;
+}
+
+}  // namespace glint
