@@ -9,6 +9,7 @@
 #include "glint/scene_format/toml_scene_loader.h"
 #include "toml_text.h"
 #include "glint/scene/default_scene.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -328,6 +329,52 @@ roughness = 0.5
     EXPECT_EQ(m.alpha_texture, m.texture);
     EXPECT_FLOAT_EQ(m.alpha_cutoff, 0.25f);
     EXPECT_FLOAT_EQ(m.roughness, 0.5f);
+}
+
+// The cut-out is behaviour, not a stored field: rays pass where the texture is clear.
+TEST(TomlScene, AlphaTextureCutsOutAMeshForCameraAndShadowRays) {
+    LoadedScene s = load(R"(
+[[textures]]
+name = "half"
+type = "image"
+file = "../tests/data/left_opaque_right_clear.png"
+wrap = "clamp"
+[[materials]]
+name = "leaf"
+alpha_texture = "half"
+[[objects]]
+type = "mesh"
+positions = [[0, 0, 0], [2, 0, 0], [2, 0, -1], [0, 0, -1]]
+uvs = [[0, 0], [1, 0], [1, 1], [0, 1]]
+indices = [[0, 1, 2], [0, 2, 3]]
+material = "leaf"
+)");
+    const RenderScene scene(std::move(s.scene));
+    const Vec3 down(0.0f, -1.0f, 0.0f);
+    for (const float x : {0.2f, 0.6f, 1.4f, 1.8f}) {
+        const bool opaque = x < 1.0f;  // u = x / 2: the left texel is opaque, the right one clear
+        Ray ray(Vec3(x, 1.0f, -0.5f), down);
+        Hit hit;
+        EXPECT_EQ(scene.intersect(ray, hit), opaque) << "x = " << x;
+        EXPECT_EQ(scene.occluded(Ray(Vec3(x, 1.0f, -0.5f), down)), opaque) << "x = " << x;
+    }
+}
+
+TEST(TomlSceneErrors, AlphaTextureOnAShapeThatCannotBeCutOut) {
+    expect_error(R"(
+[[textures]]
+name = "half"
+type = "image"
+file = "../tests/data/left_opaque_right_clear.png"
+[[materials]]
+name = "leaf"
+alpha_texture = "half"
+[[objects]]
+type = "sphere"
+radius = 1
+material = "leaf"
+)",
+                 "test.toml:12:12:", {"objects[0].material", "cuts out", "triangle meshes with uvs"});
 }
 
 TEST(TomlScene, HandoutRefractionIndex) {

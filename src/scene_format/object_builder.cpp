@@ -39,6 +39,21 @@ const std::vector<uint32_t>* vertex_materials(const Shape& shape) {
     return mesh && !mesh->data().vertex_materials.empty() ? &mesh->data().vertex_materials : nullptr;
 }
 
+/// A material's `alpha_texture` cuts its object out where the texture's alpha is below
+/// `alpha_cutoff`. The test runs inside the mesh's own traversal (so the closest kept hit
+/// is found), which only triangle meshes with uvs have; other shapes are refused rather
+/// than drawn uncut.
+void apply_cutout(const ParamTable& t, Shape& shape, const Material& m) {
+    auto* mesh = dynamic_cast<TriangleMesh*>(&shape);
+    if (!mesh || mesh->data().uvs.empty())
+        t.fail("material", fmt::format("a material without alpha_texture for this shape: material '{}' cuts out, which "
+                                       "only triangle meshes with uvs can (type \"mesh\" or \"triangle\" with uvs)",
+                                       m.name));
+    if (mesh->alpha_mask() && mesh->alpha_mask() != m.alpha_texture)
+        t.fail("material", "the same alpha_texture as the other objects that place this shape");
+    mesh->set_alpha_mask(m.alpha_texture, m.alpha_cutoff);
+}
+
 void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& context) {
     std::optional<Transform> transform;
     if (const ParamValue* v = t.find("transform")) transform = read_transform(*v, t.name_of("transform"));
@@ -64,6 +79,7 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
     const ParamValue* m = per_vertex ? t.find("material") : &t.require("material", "a material name");
     if (m && per_vertex) t.fail("material", "either one material or per-vertex materials, not both");
     const uint32_t material = m ? context.material(*m, t.name_of("material")) : per_vertex->front();
+    if (context.scene().material(material).alpha_texture) apply_cutout(t, *shape, context.scene().material(material));
     const std::string name = t.string("name", "");
     t.reject_unknown_keys();
     context.scene().add_object(std::move(shape), material, transform, name);
