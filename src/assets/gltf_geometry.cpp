@@ -1,7 +1,5 @@
 #include "gltf_geometry.h"
 
-#include "glint/diagnostics.h"
-
 #include <algorithm>
 
 #include <cstring>
@@ -9,13 +7,6 @@
 namespace glint::gltf {
 
 namespace {
-
-constexpr uint32_t kChunkJson = 0x4E4F534A;    // "JSON"
-constexpr uint32_t kChunkBinary = 0x004E4942;  // "BIN\0"
-
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-    throw SceneError(path.string() + ": " + what);
-}
 
 std::size_t component_size(int type) {
     switch (type) {

@@ -14,6 +14,9 @@
 
 namespace glint::gltf {
 
+/// Material extensions whose content the converter reads (fully or in part, docs/assets.md).
+[[nodiscard]] bool is_mapped_material_extension(const std::string& name);
+
 /// A converted material and what the mesh using it must know.
 struct MaterialInfo {
     uint32_t scene_material = 0;

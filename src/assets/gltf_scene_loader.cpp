@@ -18,22 +18,19 @@ namespace glint {
 
 namespace {
 
-Vec3 apply_point(const Matrix4& m, const Vec3& p) {
-    Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = m.m[i][0] * p.x + m.m[i][1] * p.y + m.m[i][2] * p.z + m.m[i][3];
-    return r;
-}
-
-Vec3 apply_vector(const Matrix4& m, const Vec3& v) {
-    Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = m.m[i][0] * v.x + m.m[i][1] * v.y + m.m[i][2] * v.z;
-    return r;
+/// A node's frame, for placing a camera or a light with point() and vector(). Unlike a
+/// mesh, a light still has a place under a singular node (scale 0: glTF lights ignore the
+/// node's scale), so the inverse, which nothing here reads, falls back to the identity
+/// instead of refusing the node.
+Transform node_frame(const Matrix4& world_from_node) {
+    Matrix4 inverse;
+    if (!world_from_node.inverse(inverse)) inverse = Matrix4::identity();
+    return {world_from_node, inverse};
 }
 
 /// Extensions the loader maps (fully or in part); anything else in extensionsUsed is reported.
 bool is_mapped_extension(const std::string& name) {
-    return name == "KHR_lights_punctual" || name == "KHR_materials_transmission" || name == "KHR_materials_ior" ||
-           name == "KHR_materials_emissive_strength";
+    return name == "KHR_lights_punctual" || gltf::is_mapped_material_extension(name);
 }
 
 /// glTF cameras look along their node's -z with +y up.
@@ -46,9 +43,10 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
         const auto index = node["camera"].get<std::size_t>();
         if (index >= gltf::array_size(json, "cameras")) continue;
         const auto& cam = json["cameras"][index];
-        const Vec3 eye = apply_point(placed.world_from_node, Vec3(0.0f));
-        const Vec3 forward = apply_vector(placed.world_from_node, Vec3(0.0f, 0.0f, -1.0f));
-        const Vec3 up = apply_vector(placed.world_from_node, Vec3(0.0f, 1.0f, 0.0f));
+        const Transform frame = node_frame(placed.world_from_node);
+        const Vec3 eye = frame.point(Vec3(0.0f));
+        const Vec3 forward = frame.vector(Vec3(0.0f, 0.0f, -1.0f));
+        const Vec3 up = frame.vector(Vec3(0.0f, 1.0f, 0.0f));
         GltfCamera result;
         result.index = int(index);
         result.name = cam.value("name", node.value("name", "camera" + std::to_string(index)));
@@ -88,8 +86,9 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
         if (light.contains("color") && light["color"].size() >= 3)
             color = {light["color"][0].get<float>(), light["color"][1].get<float>(), light["color"][2].get<float>()};
         const Color glint_intensity = color * (light.value("intensity", 1.0f) * kInvPi);
-        const Vec3 position = apply_point(placed.world_from_node, Vec3(0.0f));
-        const Vec3 direction = apply_vector(placed.world_from_node, Vec3(0.0f, 0.0f, -1.0f));
+        const Transform frame = node_frame(placed.world_from_node);
+        const Vec3 position = frame.point(Vec3(0.0f));
+        const Vec3 direction = frame.vector(Vec3(0.0f, 0.0f, -1.0f));
         const std::string type = light.value("type", "");
         if (light.contains("range")) notes.ignored("light range (inverse-square falloff has no cut-off)", name);
         try {

@@ -1,6 +1,7 @@
 #include "mesh_file.h"
 
 #include "gltf_geometry.h"
+#include "name_list.h"
 
 #include "glint/diagnostics.h"
 #include "glint/image/image_io.h"
@@ -144,12 +145,7 @@ Material convert_assimp_material(const aiMaterial* mat, unsigned index) {
 
 std::vector<std::string> animation_warnings(const std::filesystem::path& path, const MeshFile& file) {
     std::vector<std::string> lines;
-    auto names = [](const std::vector<std::string>& list) {
-        std::string joined;
-        for (std::size_t i = 0; i < list.size() && i < 4; ++i) joined += (i ? ", '" : "'") + list[i] + "'";
-        if (list.size() > 4) joined += " and " + std::to_string(list.size() - 4) + " more";
-        return joined;
-    };
+    auto names = [](const std::vector<std::string>& list) { return quoted_names(list, list.size()); };
     if (!file.skinned_meshes.empty())
         lines.push_back(path.string() + ": ignored skins: meshes drawn in their bind pose (" + names(file.skinned_meshes) + ")");
     if (!file.morphed_meshes.empty())
