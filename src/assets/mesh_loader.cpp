@@ -8,10 +8,6 @@
 #include "glint/scene/asset_defaults.h"
 #include "glint/util/file_extension.h"
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
 #include <algorithm>
 #include <cctype>
 
@@ -91,34 +87,14 @@ std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, boo
 }  // namespace
 
 MeshData load_mesh_data(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
-    Assimp::Importer importer;
-    // Only what merging needs: no validation pass, no vertex joining (file order is kept).
-    const aiScene* ai = importer.ReadFile(path.string(), aiProcess_Triangulate);
-    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
+    const MeshFile file = read_mesh_file(path, ReadMode::Strict);
     MeshData data;
-    for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
-        const aiMesh* mesh = ai->mMeshes[m];
+    for (const auto& mesh : file.meshes) {
+        if (!mesh) continue;  // points or lines only
         const auto base = static_cast<uint32_t>(data.positions.size());
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-            const Vec3 p(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z);
-            if (!is_finite(p))
-                throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": vertex " + std::to_string(v) +
-                                 " has a non-finite position (expected finite coordinates)");
-            data.positions.push_back(p);
-        }
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            const aiFace& face = mesh->mFaces[f];
-            if (face.mNumIndices != 3) continue;
-            for (unsigned k = 0; k < 3; ++k) {
-                if (face.mIndices[k] >= mesh->mNumVertices)
-                    throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": face " + std::to_string(f) +
-                                     " uses vertex " + std::to_string(face.mIndices[k]) + " (expected an index below " +
-                                     std::to_string(mesh->mNumVertices) + ")");
-                data.indices.push_back(base + face.mIndices[k]);
-            }
-        }
+        const MeshData& part = mesh->data();
+        data.positions.insert(data.positions.end(), part.positions.begin(), part.positions.end());
+        for (const uint32_t index : part.indices) data.indices.push_back(base + index);
     }
     if (data.indices.empty()) throw SceneError(path.string() + ": the file has no triangles (expected at least one)");
     return data;
@@ -140,7 +116,7 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     } else {
         auto fresh = std::make_unique<MeshCache::Entry>();
         fresh->is_gltf = has_gltf_extension(path);
-        fresh->file = fresh->is_gltf ? read_gltf_geometry(gltf::read_document(path)) : read_mesh_file(path, true);
+        fresh->file = fresh->is_gltf ? read_gltf_geometry(gltf::read_document(path)) : read_mesh_file(path, ReadMode::Lenient);
         result.warnings = fresh->file.warnings;
         for (std::string& line : animation_warnings(path, fresh->file)) result.warnings.push_back(std::move(line));
         meshes = std::move(fresh->file.meshes);
