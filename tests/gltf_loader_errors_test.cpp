@@ -259,6 +259,27 @@ TEST(GltfErrors, OutOfRangeIndexValuesDropTheirTriangles) {
     EXPECT_EQ(mesh.data().indices, (std::vector<uint32_t>{0, 1, 2})) << "the good triangle is kept as it was";
 }
 
+// A node scaled to zero has no inverse for ray queries: its mesh is skipped with the same
+// warning whichever way the file comes in, and the other node still draws.
+TEST(GltfErrors, SingularNodesAreSkippedWithAWarning) {
+    const fs::path dir = glint_test::temp_dir();
+    json j = glint_test::quad_json("quad.bin");
+    j["nodes"].push_back({{"name", "flattened"}, {"mesh", 0}, {"scale", {1, 0, 1}}});
+    j["scenes"][0]["nodes"].push_back(1);
+    const fs::path path = glint_test::write_gltf(dir, "flat", j);
+    const std::string warning = "flat.gltf: ignored node with a singular transform (scale 0) (on 'flattened')";
+
+    const glint::GltfScene s = glint::load_gltf_scene(path);
+    EXPECT_EQ(s.report.objects, 1u);
+    EXPECT_TRUE(has_warning(s.loaded.warnings, warning, dir.string())) << testing::PrintToString(s.loaded.warnings);
+
+    glint::Scene scene;
+    glint::MeshCache cache;
+    const auto result = glint::import_mesh_file(scene, path, glint::Transform(), std::nullopt, cache);
+    EXPECT_EQ(result.objects, 1u);
+    EXPECT_TRUE(has_warning(result.warnings, warning, dir.string())) << testing::PrintToString(result.warnings);
+}
+
 TEST(GltfErrors, NoGeometryIsAnError) {
     const fs::path dir = glint_test::temp_dir();
     json j = glint_test::quad_json("quad.bin");

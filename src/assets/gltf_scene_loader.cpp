@@ -2,8 +2,9 @@
 
 #include "gltf_document.h"
 #include "gltf_materials.h"
-#include "gltf_notes.h"
+#include "import_notes.h"
 #include "mesh_file.h"
+#include "place_meshes.h"
 
 #include "glint/diagnostics.h"
 #include "glint/scene/asset_defaults.h"
@@ -11,8 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
-#include <unordered_set>
 
 namespace glint {
 
@@ -35,7 +34,7 @@ bool is_mapped_extension(const std::string& name) {
 
 /// glTF cameras look along their node's -z with +y up.
 void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, GltfReport& report,
-                     gltf::Notes& notes) {
+                     ImportNotes& notes) {
     const auto& json = doc.json;
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json["nodes"][std::size_t(placed.node)];
@@ -71,7 +70,7 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
 
 /// KHR_lights_punctual to Glint lights: intensities divided by π (docs/units.md).
 void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, Scene& scene,
-                    GltfReport& report, gltf::Notes& notes) {
+                    GltfReport& report, ImportNotes& notes) {
     const auto& json = doc.json;
     if (!json.contains("extensions") || !json["extensions"].contains("KHR_lights_punctual")) return;
     const auto& lights = json["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
@@ -116,7 +115,7 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
 
 /// Skins, morph targets and animations: the geometry reader never sees them (it is given
 /// the geometry only), so they are reported from the JSON.
-void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, gltf::Notes& notes) {
+void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, ImportNotes& notes) {
     const auto& json = doc.json;
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json["nodes"][std::size_t(placed.node)];
@@ -151,7 +150,7 @@ int find_camera(const GltfReport& report, const std::string& wanted) {
 /// Render through the file's camera `options.camera` (the first by default), or frame the
 /// scene automatically when the file has none; the image gets the camera's aspect ratio.
 void choose_camera(const std::filesystem::path& path, const GltfOptions& options, GltfReport& report, Scene& scene,
-                   RenderSettings& settings, gltf::Notes& notes) {
+                   RenderSettings& settings, ImportNotes& notes) {
     settings.width = 640;
     settings.height = 480;
     report.selected_camera = find_camera(report, options.camera);
@@ -178,7 +177,7 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     GltfScene result;
     Scene& scene = result.loaded.scene;
     GltfReport& report = result.report;
-    gltf::Notes notes;
+    ImportNotes notes;
 
     const gltf::Document doc = gltf::read_document(path);
     MeshFile file = read_gltf_geometry(doc);
@@ -194,27 +193,19 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     materials.convert_all();
     report.materials = gltf::array_size(doc.json, "materials");
 
-    std::unordered_set<const TriangleMesh*> unique;
-    for (const MeshPlacement& placement : file.placements) {
-        const auto& mesh = file.meshes[placement.mesh];
-        const uint32_t file_material = file.mesh_materials[placement.mesh];
+    auto material = [&](uint32_t mesh) {
+        const uint32_t file_material = file.mesh_materials[mesh];
         if (file_material >= report.materials) report.default_material = true;
         const gltf::MaterialInfo& info = materials.material(int(file_material));
-        if (info.alpha_mask) mesh->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
-        Transform world_from_mesh;
-        try {
-            world_from_mesh = Transform(placement.file_from_mesh);
-        } catch (const std::invalid_argument&) {
-            notes.ignored("node with a singular transform (scale 0)", placement.node);
-            continue;
-        }
-        scene.add_object(mesh, info.scene_material, world_from_mesh, placement.node);
-        ++report.objects;
-        report.instanced_triangles += mesh->triangle_count();
-        if (unique.insert(mesh.get()).second) report.triangles += mesh->triangle_count();
-    }
+        if (info.alpha_mask) file.meshes[mesh]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
+        return info.scene_material;
+    };
+    const PlacedMeshes placed = place_meshes(scene, file.placements, file.meshes, Transform(), material, notes);
+    report.objects = placed.objects;
+    report.instanced_triangles = placed.instanced_triangles;
+    for (const TriangleMesh* mesh : placed.meshes) report.triangles += mesh->triangle_count();
     if (report.objects == 0) throw SceneError(path.string() + ": no mesh can be placed (every node was skipped)");
-    report.primitives = unique.size();
+    report.primitives = placed.meshes.size();
     report.meshes = file.distinct_meshes;
     report.textures = materials.texture_count();
 

@@ -3,6 +3,7 @@
 #include "gltf_document.h"
 #include "gltf_materials.h"
 #include "mesh_file.h"
+#include "place_meshes.h"
 
 #include "glint/diagnostics.h"
 #include "glint/scene/asset_defaults.h"
@@ -60,11 +61,10 @@ std::filesystem::path canonical_key(const std::filesystem::path& path) {
 /// glTF materials come from the JSON and may put alpha masks on `meshes`.
 std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, bool is_gltf,
                                          const std::vector<std::shared_ptr<TriangleMesh>>& meshes,
-                                         const std::filesystem::path& path, std::vector<std::string>& warnings) {
+                                         const std::filesystem::path& path, ImportNotes& notes) {
     std::vector<uint32_t> result;
     if (is_gltf) {
         const gltf::Document doc = gltf::read_document(path);
-        gltf::Notes notes;
         gltf::MaterialConverter converter(doc, scene, notes);
         for (std::size_t m = 0; m < meshes.size(); ++m) {
             const uint32_t file_material = file.mesh_materials[m];
@@ -73,7 +73,6 @@ std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, boo
             result[file_material] = info.scene_material;
             if (meshes[m] && info.alpha_mask) meshes[m]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
         }
-        for (const std::string& line : notes.ignored_lines()) warnings.push_back(path.string() + ": ignored " + line);
         return result;
     }
     for (std::size_t i = 0; i < file.materials.size(); ++i) {
@@ -107,6 +106,7 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
                          " does not exist (the scene has " + std::to_string(scene.materials().size()) + ")");
     const std::filesystem::path key = canonical_key(path);
     MeshImportResult result;
+    ImportNotes notes;
     MeshCache::Entry* entry = files.find(key);
     result.reused = entry != nullptr;
     // Strong references for this call: the file's meshes live in the scene once placed.
@@ -125,31 +125,19 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
         entry = &files.insert(key, std::move(fresh));
     }
     if (!override_material && !entry->scene_materials)
-        entry->scene_materials = add_file_materials(scene, entry->file, entry->is_gltf, meshes, path, result.warnings);
+        entry->scene_materials = add_file_materials(scene, entry->file, entry->is_gltf, meshes, path, notes);
 
-    for (const MeshPlacement& placement : entry->file.placements) {
-        Transform file_from_mesh;
-        try {
-            file_from_mesh = Transform(placement.file_from_mesh);
-        } catch (const std::invalid_argument&) {
-            result.warnings.push_back(path.string() + ": node '" + placement.node +
-                                      "' has a singular transform; its mesh is skipped");
-            continue;
-        }
-        uint32_t material = 0;
-        if (override_material) {
-            material = *override_material;
-        } else {
-            const uint32_t file_material = entry->file.mesh_materials[placement.mesh];
-            const auto& table = *entry->scene_materials;
-            material = file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
-        }
-        const auto& mesh = meshes[placement.mesh];
-        if (!mesh) continue;  // never placed before (singular transform), so not kept
-        scene.add_object(mesh, material, world_from_file * file_from_mesh, placement.node);
-        ++result.objects;
-        result.triangles += mesh->triangle_count();
-    }
+    auto material = [&](uint32_t mesh) {
+        if (override_material) return *override_material;
+        const uint32_t file_material = entry->file.mesh_materials[mesh];
+        const auto& table = *entry->scene_materials;
+        return file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
+    };
+    const PlacedMeshes placed =
+        place_meshes(scene, entry->file.placements, meshes, world_from_file, material, notes);
+    for (const std::string& line : notes.ignored_lines()) result.warnings.push_back(path.string() + ": ignored " + line);
+    result.objects = placed.objects;
+    result.triangles = placed.instanced_triangles;
     return result;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-/// \file What a glTF import mapped and what it ignored, one line per kind. Internal.
+/// \file What an import mapped and what it ignored, one line per kind. Internal.
 
 #include "name_list.h"
 
@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-namespace glint::gltf {
+namespace glint {
 
 /// Collects ignored features by kind so that a file with a hundred normal-mapped materials
 /// gives one warning line, not a hundred.
-class Notes {
+class ImportNotes {
 public:
     /// Something mapped, for `glint info`.
     void mapped(std::string line) { mapped_.push_back(std::move(line)); }
@@ -44,4 +44,4 @@ private:
     std::map<std::string, std::size_t> counts_;
 };
 
-}  // namespace glint::gltf
+}  // namespace glint
