@@ -58,14 +58,14 @@ std::filesystem::path canonical_key(const std::filesystem::path& path) {
 }
 
 /// Convert `file`'s materials into `scene`; returns the scene material of each file material.
-/// glTF materials come from the JSON and may put alpha masks on `meshes`.
-std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, bool is_gltf,
+/// A glTF file's materials come from its document `gltf` (null for other formats) and may
+/// put alpha masks on `meshes`.
+std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, const gltf::Document* gltf,
                                          const std::vector<std::shared_ptr<TriangleMesh>>& meshes,
-                                         const std::filesystem::path& path, ImportNotes& notes) {
+                                         ImportNotes& notes) {
     std::vector<uint32_t> result;
-    if (is_gltf) {
-        const gltf::Document doc = gltf::read_document(path);
-        gltf::MaterialConverter converter(doc, scene, notes);
+    if (gltf) {
+        gltf::MaterialConverter converter(*gltf, scene, notes);
         for (std::size_t m = 0; m < meshes.size(); ++m) {
             const uint32_t file_material = file.mesh_materials[m];
             if (result.size() <= file_material) result.resize(file_material + 1, 0);
@@ -109,6 +109,14 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     ImportNotes notes;
     MeshCache::Entry* entry = files.find(key);
     result.reused = entry != nullptr;
+    // A glTF document, read at most once per call: for the geometry of a file not cached
+    // yet, and for its materials on the first placement that uses them. The cache does not
+    // keep it, since its buffers hold the whole file.
+    std::optional<gltf::Document> doc;
+    auto document = [&]() -> const gltf::Document& {
+        if (!doc) doc = gltf::read_document(path);
+        return *doc;
+    };
     // Strong references for this call: the file's meshes live in the scene once placed.
     std::vector<std::shared_ptr<TriangleMesh>> meshes;
     if (entry) {
@@ -116,7 +124,7 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     } else {
         auto fresh = std::make_unique<MeshCache::Entry>();
         fresh->is_gltf = has_gltf_extension(path);
-        fresh->file = fresh->is_gltf ? read_gltf_geometry(gltf::read_document(path)) : read_mesh_file(path, ReadMode::Lenient);
+        fresh->file = fresh->is_gltf ? read_gltf_geometry(document()) : read_mesh_file(path, ReadMode::Lenient);
         result.warnings = fresh->file.warnings;
         for (std::string& line : animation_warnings(path, fresh->file)) result.warnings.push_back(std::move(line));
         meshes = std::move(fresh->file.meshes);
@@ -125,7 +133,8 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
         entry = &files.insert(key, std::move(fresh));
     }
     if (!override_material && !entry->scene_materials)
-        entry->scene_materials = add_file_materials(scene, entry->file, entry->is_gltf, meshes, path, notes);
+        entry->scene_materials =
+            add_file_materials(scene, entry->file, entry->is_gltf ? &document() : nullptr, meshes, notes);
 
     auto material = [&](uint32_t mesh) {
         if (override_material) return *override_material;
