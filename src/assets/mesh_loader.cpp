@@ -10,7 +10,6 @@
 #include "glint/util/file_extension.h"
 
 #include <algorithm>
-#include <cctype>
 
 namespace glint {
 
