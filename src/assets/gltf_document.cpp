@@ -11,15 +11,9 @@
 
 namespace glint::gltf {
 
+void fail(const std::filesystem::path& path, const std::string& what) { throw SceneError(path.string() + ": " + what); }
+
 namespace {
-
-constexpr uint32_t kGlbMagic = 0x46546C67;      // "glTF"
-constexpr uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
-constexpr uint32_t kChunkBinary = 0x004E4942;   // "BIN\0"
-
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-    throw SceneError(path.string() + ": " + what);
-}
 
 std::vector<unsigned char> read_bytes(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);

@@ -11,11 +11,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace glint::gltf {
+
+/// GLB container words (glTF 2.0 §4.4): the file's magic and the two chunk types, little-endian.
+inline constexpr uint32_t kGlbMagic = 0x46546C67;     // "glTF"
+inline constexpr uint32_t kChunkJson = 0x4E4F534A;    // "JSON"
+inline constexpr uint32_t kChunkBinary = 0x004E4942;  // "BIN\0"
+
+/// Throw SceneError "path: what": every glTF problem names the file first.
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what);
 
 struct Document {
     std::filesystem::path path;

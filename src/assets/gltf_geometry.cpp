@@ -1,7 +1,5 @@
 #include "gltf_geometry.h"
 
-#include "glint/diagnostics.h"
-
 #include <algorithm>
 
 #include <cstring>
@@ -9,13 +7,6 @@
 namespace glint::gltf {
 
 namespace {
-
-constexpr uint32_t kChunkJson = 0x4E4F534A;    // "JSON"
-constexpr uint32_t kChunkBinary = 0x004E4942;  // "BIN\0"
-
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-    throw SceneError(path.string() + ": " + what);
-}
 
 std::size_t component_size(int type) {
     switch (type) {
@@ -84,22 +75,16 @@ std::size_t count_bad_indices(const Document& doc, std::size_t index, std::size_
     return bad;
 }
 
-}  // namespace
+using nlohmann::json;
 
-std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings) {
-    using nlohmann::json;
+/// The default scene's hierarchy as a forest: "scenes" and "nodes" with names, transforms,
+/// meshes and children. A child index that does not exist, a second parent or a cycle is
+/// dropped (assimp would read past its node array or recurse forever), and so is a root that
+/// became a child.
+void add_nodes(const Document& doc, json& out) {
     const json& in = doc.json;
-    json out;
-    out["asset"] = {{"version", "2.0"}};
-    if (in.contains("scene")) out["scene"] = in["scene"];
-    if (in.contains("scenes")) {
-        out["scenes"] = json::array();
-        for (const auto& scene : in["scenes"]) out["scenes"].push_back({{"nodes", scene.value("nodes", json::array())}});
-    }
     const std::size_t mesh_count = array_size(in, "meshes");
     const std::size_t node_count = array_size(in, "nodes");
-    // The hierarchy must be a forest: a child index that does not exist, a second parent or a
-    // cycle is dropped (assimp would read past the array or recurse forever).
     std::vector<int> parent(node_count, -1);
     auto is_ancestor = [&](std::size_t candidate, std::size_t node) {
         for (int p = int(node); p >= 0; p = parent[std::size_t(p)])
@@ -128,15 +113,24 @@ std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings
         if (!children.empty()) n["children"] = std::move(children);
         out["nodes"].push_back(std::move(n));
     }
-    if (out.contains("scenes"))
-        for (auto& scene : out["scenes"]) {
-            json roots = json::array();
-            for (const auto& r : scene["nodes"])
-                if (r.get<std::size_t>() < node_count && parent[r.get<std::size_t>()] < 0) roots.push_back(r);
-            scene["nodes"] = std::move(roots);
-        }
+    if (in.contains("scene")) out["scene"] = in["scene"];
+    if (!in.contains("scenes")) return;
+    out["scenes"] = json::array();
+    for (const auto& scene : in["scenes"]) {
+        json roots = json::array();
+        for (const auto& r : scene.value("nodes", json::array()))
+            if (r.get<std::size_t>() < node_count && parent[r.get<std::size_t>()] < 0) roots.push_back(r);
+        out["scenes"].push_back({{"nodes", std::move(roots)}});
+    }
+}
+
+/// "meshes" with attributes, indices and mode only, and "accessors". Every accessor a
+/// primitive uses is checked to lie inside its buffer (SceneError otherwise); index values
+/// past the vertices are counted in `warnings`, and assimp drops their triangles.
+void add_meshes(const Document& doc, json& out, std::vector<std::string>& warnings) {
+    const json& in = doc.json;
     out["meshes"] = json::array();
-    for (std::size_t m = 0; m < mesh_count; ++m) {
+    for (std::size_t m = 0, mesh_count = array_size(in, "meshes"); m < mesh_count; ++m) {
         const auto& mesh = in["meshes"][m];
         json primitives = json::array();
         std::size_t p = 0;
@@ -164,8 +158,11 @@ std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings
         out["meshes"].push_back(std::move(kept_mesh));
     }
     if (in.contains("accessors")) out["accessors"] = in["accessors"];
+}
 
-    // One merged buffer: every buffer 4-byte aligned, bufferViews shifted to match.
+/// The document's buffers merged into one, each 4-byte aligned, with "bufferViews" shifted
+/// to match and "buffers" describing the result; returns the merged bytes.
+std::string add_merged_buffer(const Document& doc, json& out) {
     std::vector<std::size_t> base;
     std::string bin;
     for (const auto& buffer : doc.buffers) {
@@ -174,7 +171,7 @@ std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings
         while (bin.size() % 4) bin += '\0';
     }
     out["bufferViews"] = json::array();
-    for (const auto& view : in.value("bufferViews", json::array())) {
+    for (const auto& view : doc.json.value("bufferViews", json::array())) {
         json v = json::object();
         const auto buffer = view.at("buffer").get<std::size_t>();
         if (buffer >= base.size()) fail(doc.path, "a bufferView uses buffer " + std::to_string(buffer) + ", which does not exist");
@@ -185,17 +182,32 @@ std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings
         out["bufferViews"].push_back(std::move(v));
     }
     out["buffers"] = json::array({{{"byteLength", bin.size()}}});
+    return bin;
+}
 
-    std::string text = out.dump();
+/// A GLB file (glTF 2.0 §4.4): header, JSON chunk padded with spaces, BIN chunk.
+std::string pack_glb(const json& gltf, const std::string& bin) {
+    std::string text = gltf.dump();
     while (text.size() % 4) text += ' ';
     auto u32 = [](std::size_t v) {
         const auto x = static_cast<uint32_t>(v);
         return std::string(reinterpret_cast<const char*>(&x), 4);
     };
-    std::string glb = "glTF" + u32(2) + u32(12 + 8 + text.size() + 8 + bin.size());
+    std::string glb = u32(kGlbMagic) + u32(2) + u32(12 + 8 + text.size() + 8 + bin.size());
     glb += u32(text.size()) + u32(kChunkJson) + text;
     glb += u32(bin.size()) + u32(kChunkBinary) + bin;
     return glb;
+}
+
+}  // namespace
+
+std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings) {
+    json out;
+    out["asset"] = {{"version", "2.0"}};
+    add_nodes(doc, out);
+    add_meshes(doc, out, warnings);
+    const std::string bin = add_merged_buffer(doc, out);
+    return pack_glb(out, bin);
 }
 
 std::vector<uint32_t> primitive_materials(const Document& doc) {

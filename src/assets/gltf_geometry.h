@@ -13,10 +13,20 @@ namespace glint::gltf {
 /// The geometry of `doc` as a self-contained GLB for assimp: scenes, nodes (names,
 /// transforms, children, meshes), meshes (attributes, indices, mode), accessors and one
 /// merged buffer; no materials, images, cameras, lights, skins, animations, morph targets or
-/// extensions. Why: Glint reads those itself from the JSON, and assimp 5.2.5 crashes on some
-/// valid files in exactly those parts (a skin without inverseBindMatrices). Every accessor a
-/// primitive uses is checked to lie inside its buffer first, and out-of-range index values
-/// are reported in `warnings`. Throws SceneError.
+/// extensions. Every accessor a primitive uses is checked to lie inside its buffer first, and
+/// out-of-range index values are reported in `warnings`. Throws SceneError.
+///
+/// Why the document is written out again rather than handed to assimp (checked against
+/// assimp 5.2.5's Importer.hpp and MemoryIOWrapper.h):
+/// - assimp takes bytes only (ReadFile, or ReadFileFromMemory with an optional IOSystem for
+///   the files the bytes name); there is no entry point for an already parsed document.
+/// - The original bytes are not safe to give it: a node cycle or second parent makes it
+///   recurse forever or read past its node array, an accessor outside its buffer makes it
+///   read past the buffer, and a skin without inverseBindMatrices crashes it. Removing those
+///   means changing the JSON, so it has to be serialised again anyway; leaving out what
+///   Glint reads itself (materials, images...) also spares assimp decoding it.
+/// - One embedded BIN chunk of the buffers already read and checked: assimp opens no file
+///   (no second read of a .bin, no data URI decoded twice) and sees exactly the checked bytes.
 [[nodiscard]] std::string geometry_glb(const Document& doc, std::vector<std::string>& warnings);
 
 /// Per mesh primitive in assimp's numbering (mesh by mesh, primitive by primitive), its

@@ -22,13 +22,12 @@ const nlohmann::json& extension(const nlohmann::json& material, const char* name
     return empty;
 }
 
-/// Extensions whose content this converter reads (fully or in part, docs/assets.md).
+}  // namespace
+
 bool is_mapped_material_extension(const std::string& name) {
     return name == "KHR_materials_transmission" || name == "KHR_materials_ior" ||
            name == "KHR_materials_emissive_strength";
 }
-
-}  // namespace
 
 void MaterialConverter::convert_all() {
     const std::size_t count = array_size(doc_.json, "materials");

@@ -2,7 +2,7 @@
 /// \file glTF metallic-roughness materials to Glint's Whitted material (docs/assets.md). Internal.
 
 #include "gltf_document.h"
-#include "gltf_notes.h"
+#include "import_notes.h"
 
 #include "glint/scene/scene.h"
 
@@ -13,6 +13,9 @@
 #include <vector>
 
 namespace glint::gltf {
+
+/// Material extensions whose content the converter reads (fully or in part, docs/assets.md).
+[[nodiscard]] bool is_mapped_material_extension(const std::string& name);
 
 /// A converted material and what the mesh using it must know.
 struct MaterialInfo {
@@ -25,7 +28,7 @@ struct MaterialInfo {
 
 class MaterialConverter {
 public:
-    MaterialConverter(const Document& doc, Scene& scene, Notes& notes) : doc_(doc), scene_(scene), notes_(notes) {}
+    MaterialConverter(const Document& doc, Scene& scene, ImportNotes& notes) : doc_(doc), scene_(scene), notes_(notes) {}
 
     /// Convert every material of the file into the scene, in file order.
     void convert_all();
@@ -46,7 +49,7 @@ private:
 
     const Document& doc_;
     Scene& scene_;
-    Notes& notes_;
+    ImportNotes& notes_;
     std::map<int, MaterialInfo> converted_;
     std::map<int, const Texture*> textures_;
     std::map<int, std::shared_ptr<const Image>> images_;

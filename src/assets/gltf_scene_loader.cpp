@@ -2,8 +2,9 @@
 
 #include "gltf_document.h"
 #include "gltf_materials.h"
-#include "gltf_notes.h"
+#include "import_notes.h"
 #include "mesh_file.h"
+#include "place_meshes.h"
 
 #include "glint/diagnostics.h"
 #include "glint/scene/asset_defaults.h"
@@ -11,34 +12,29 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
-#include <unordered_set>
 
 namespace glint {
 
 namespace {
 
-Vec3 apply_point(const Matrix4& m, const Vec3& p) {
-    Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = m.m[i][0] * p.x + m.m[i][1] * p.y + m.m[i][2] * p.z + m.m[i][3];
-    return r;
-}
-
-Vec3 apply_vector(const Matrix4& m, const Vec3& v) {
-    Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = m.m[i][0] * v.x + m.m[i][1] * v.y + m.m[i][2] * v.z;
-    return r;
+/// A node's frame, for placing a camera or a light with point() and vector(). Unlike a
+/// mesh, a light still has a place under a singular node (scale 0: glTF lights ignore the
+/// node's scale), so the inverse, which nothing here reads, falls back to the identity
+/// instead of refusing the node.
+Transform node_frame(const Matrix4& world_from_node) {
+    Matrix4 inverse;
+    if (!world_from_node.inverse(inverse)) inverse = Matrix4::identity();
+    return {world_from_node, inverse};
 }
 
 /// Extensions the loader maps (fully or in part); anything else in extensionsUsed is reported.
 bool is_mapped_extension(const std::string& name) {
-    return name == "KHR_lights_punctual" || name == "KHR_materials_transmission" || name == "KHR_materials_ior" ||
-           name == "KHR_materials_emissive_strength";
+    return name == "KHR_lights_punctual" || gltf::is_mapped_material_extension(name);
 }
 
 /// glTF cameras look along their node's -z with +y up.
 void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, GltfReport& report,
-                     gltf::Notes& notes) {
+                     ImportNotes& notes) {
     const auto& json = doc.json;
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json["nodes"][std::size_t(placed.node)];
@@ -46,9 +42,10 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
         const auto index = node["camera"].get<std::size_t>();
         if (index >= gltf::array_size(json, "cameras")) continue;
         const auto& cam = json["cameras"][index];
-        const Vec3 eye = apply_point(placed.world_from_node, Vec3(0.0f));
-        const Vec3 forward = apply_vector(placed.world_from_node, Vec3(0.0f, 0.0f, -1.0f));
-        const Vec3 up = apply_vector(placed.world_from_node, Vec3(0.0f, 1.0f, 0.0f));
+        const Transform frame = node_frame(placed.world_from_node);
+        const Vec3 eye = frame.point(Vec3(0.0f));
+        const Vec3 forward = frame.vector(Vec3(0.0f, 0.0f, -1.0f));
+        const Vec3 up = frame.vector(Vec3(0.0f, 1.0f, 0.0f));
         GltfCamera result;
         result.index = int(index);
         result.name = cam.value("name", node.value("name", "camera" + std::to_string(index)));
@@ -73,7 +70,7 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
 
 /// KHR_lights_punctual to Glint lights: intensities divided by π (docs/units.md).
 void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, Scene& scene,
-                    GltfReport& report, gltf::Notes& notes) {
+                    GltfReport& report, ImportNotes& notes) {
     const auto& json = doc.json;
     if (!json.contains("extensions") || !json["extensions"].contains("KHR_lights_punctual")) return;
     const auto& lights = json["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
@@ -88,8 +85,9 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
         if (light.contains("color") && light["color"].size() >= 3)
             color = {light["color"][0].get<float>(), light["color"][1].get<float>(), light["color"][2].get<float>()};
         const Color glint_intensity = color * (light.value("intensity", 1.0f) * kInvPi);
-        const Vec3 position = apply_point(placed.world_from_node, Vec3(0.0f));
-        const Vec3 direction = apply_vector(placed.world_from_node, Vec3(0.0f, 0.0f, -1.0f));
+        const Transform frame = node_frame(placed.world_from_node);
+        const Vec3 position = frame.point(Vec3(0.0f));
+        const Vec3 direction = frame.vector(Vec3(0.0f, 0.0f, -1.0f));
         const std::string type = light.value("type", "");
         if (light.contains("range")) notes.ignored("light range (inverse-square falloff has no cut-off)", name);
         try {
@@ -117,7 +115,7 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
 
 /// Skins, morph targets and animations: the geometry reader never sees them (it is given
 /// the geometry only), so they are reported from the JSON.
-void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, gltf::Notes& notes) {
+void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, ImportNotes& notes) {
     const auto& json = doc.json;
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json["nodes"][std::size_t(placed.node)];
@@ -152,7 +150,7 @@ int find_camera(const GltfReport& report, const std::string& wanted) {
 /// Render through the file's camera `options.camera` (the first by default), or frame the
 /// scene automatically when the file has none; the image gets the camera's aspect ratio.
 void choose_camera(const std::filesystem::path& path, const GltfOptions& options, GltfReport& report, Scene& scene,
-                   RenderSettings& settings, gltf::Notes& notes) {
+                   RenderSettings& settings, ImportNotes& notes) {
     settings.width = 640;
     settings.height = 480;
     report.selected_camera = find_camera(report, options.camera);
@@ -179,7 +177,7 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     GltfScene result;
     Scene& scene = result.loaded.scene;
     GltfReport& report = result.report;
-    gltf::Notes notes;
+    ImportNotes notes;
 
     const gltf::Document doc = gltf::read_document(path);
     MeshFile file = read_gltf_geometry(doc);
@@ -195,27 +193,19 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     materials.convert_all();
     report.materials = gltf::array_size(doc.json, "materials");
 
-    std::unordered_set<const TriangleMesh*> unique;
-    for (const MeshPlacement& placement : file.placements) {
-        const auto& mesh = file.meshes[placement.mesh];
-        const uint32_t file_material = file.mesh_materials[placement.mesh];
+    auto material = [&](uint32_t mesh) {
+        const uint32_t file_material = file.mesh_materials[mesh];
         if (file_material >= report.materials) report.default_material = true;
         const gltf::MaterialInfo& info = materials.material(int(file_material));
-        if (info.alpha_mask) mesh->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
-        Transform world_from_mesh;
-        try {
-            world_from_mesh = Transform(placement.file_from_mesh);
-        } catch (const std::invalid_argument&) {
-            notes.ignored("node with a singular transform (scale 0)", placement.node);
-            continue;
-        }
-        scene.add_object(mesh, info.scene_material, world_from_mesh, placement.node);
-        ++report.objects;
-        report.instanced_triangles += mesh->triangle_count();
-        if (unique.insert(mesh.get()).second) report.triangles += mesh->triangle_count();
-    }
+        if (info.alpha_mask) file.meshes[mesh]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
+        return info.scene_material;
+    };
+    const PlacedMeshes placed = place_meshes(scene, file.placements, file.meshes, Transform(), material, notes);
+    report.objects = placed.objects;
+    report.instanced_triangles = placed.instanced_triangles;
+    for (const TriangleMesh* mesh : placed.meshes) report.triangles += mesh->triangle_count();
     if (report.objects == 0) throw SceneError(path.string() + ": no mesh can be placed (every node was skipped)");
-    report.primitives = unique.size();
+    report.primitives = placed.meshes.size();
     report.meshes = file.distinct_meshes;
     report.textures = materials.texture_count();
 

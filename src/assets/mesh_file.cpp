@@ -1,6 +1,7 @@
 #include "mesh_file.h"
 
 #include "gltf_geometry.h"
+#include "name_list.h"
 
 #include "glint/diagnostics.h"
 #include "glint/image/image_io.h"
@@ -24,6 +25,20 @@ namespace {
 // JoinIdenticalVertices: it triples the time of a large PLY (0.2 s -> 0.7 s for the dragon)
 // and renumbers vertices, and the formats that matter here are indexed already.
 constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_FlipUVs | aiProcess_ValidateDataStructure;
+// The strict reader skips the validation: its own checks (convert_mesh) refuse the same
+// files and name the mesh, face and vertex, where assimp's would say it in its own words.
+constexpr unsigned kStrictFlags = kImportFlags & ~unsigned(aiProcess_ValidateDataStructure);
+
+/// How convert_scene() reads an assimp scene, and what it worked around.
+struct Conversion {
+    ReadMode mode = ReadMode::Lenient;
+    /// Convert assimp's materials (glTF converts its own from the JSON).
+    bool materials = true;
+    /// A mesh without normals gets smooth ones (what users expect of a scanned PLY or an
+    /// OBJ without `vn`); glTF asks for flat normals instead (spec §3.7.2.1).
+    bool smooth_missing_normals = true;
+    std::size_t dropped = 0, non_triangles = 0;
+};
 
 Matrix4 to_matrix(const aiMatrix4x4& a) {
     Matrix4 m;
@@ -38,16 +53,21 @@ std::string mesh_name(const aiMesh* mesh, unsigned index) {
     return mesh->mName.length > 0 ? std::string(mesh->mName.C_Str()) : "mesh" + std::to_string(index);
 }
 
-/// MeshData of one assimp mesh. Triangles that index past the vertices or touch a
-/// non-finite vertex are dropped and counted in `dropped`.
-/// With `smooth_missing_normals`, a mesh without normals gets smooth ones (what users expect
-/// of a scanned PLY or an OBJ without `vn`); glTF asks for flat normals instead (spec §3.7.2.1).
-MeshData convert_mesh(const aiMesh* mesh, bool smooth_missing_normals, std::size_t& dropped,
-                      std::size_t& non_triangles) {
+/// MeshData of assimp mesh `index` of `path`. A triangle that indexes past the vertices or
+/// touches a non-finite vertex is dropped and counted (Lenient) or refuses the file (Strict).
+MeshData convert_mesh(const aiMesh* mesh, unsigned index, const std::filesystem::path& path, Conversion& conversion) {
+    const bool strict = conversion.mode == ReadMode::Strict;
+    auto refuse = [&](const std::string& what) {
+        throw SceneError(path.string() + ": mesh " + std::to_string(index) + ": " + what);
+    };
     MeshData data;
     const unsigned n = mesh->mNumVertices;
     data.positions.resize(n);
-    for (unsigned v = 0; v < n; ++v) data.positions[v] = {mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z};
+    for (unsigned v = 0; v < n; ++v) {
+        data.positions[v] = {mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z};
+        if (strict && !is_finite(data.positions[v]))
+            refuse("vertex " + std::to_string(v) + " has a non-finite position (expected finite coordinates)");
+    }
     if (mesh->mNormals) {
         data.normals.resize(n);
         for (unsigned v = 0; v < n; ++v) {
@@ -66,14 +86,18 @@ MeshData convert_mesh(const aiMesh* mesh, bool smooth_missing_normals, std::size
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
         const aiFace& face = mesh->mFaces[f];
         if (face.mNumIndices != 3) {
-            ++non_triangles;
+            ++conversion.non_triangles;
             continue;
         }
         bool ok = true;
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < 3; ++k) {
+            if (strict && face.mIndices[k] >= n)
+                refuse("face " + std::to_string(f) + " uses vertex " + std::to_string(face.mIndices[k]) +
+                       " (expected an index below " + std::to_string(n) + ")");
             ok = ok && face.mIndices[k] < n && is_finite(data.positions[face.mIndices[k]]);
+        }
         if (!ok) {
-            ++dropped;
+            ++conversion.dropped;
             continue;
         }
         data.indices.insert(data.indices.end(), face.mIndices, face.mIndices + 3);
@@ -83,7 +107,7 @@ MeshData convert_mesh(const aiMesh* mesh, bool smooth_missing_normals, std::size
     if (!data.indices.empty())
         for (Vec3& p : data.positions)
             if (!is_finite(p)) p = data.positions[data.indices[0]];
-    if (!mesh->mNormals && smooth_missing_normals) compute_smooth_normals(data);
+    if (!mesh->mNormals && conversion.smooth_missing_normals) compute_smooth_normals(data);
     return data;
 }
 
@@ -144,12 +168,7 @@ Material convert_assimp_material(const aiMaterial* mat, unsigned index) {
 
 std::vector<std::string> animation_warnings(const std::filesystem::path& path, const MeshFile& file) {
     std::vector<std::string> lines;
-    auto names = [](const std::vector<std::string>& list) {
-        std::string joined;
-        for (std::size_t i = 0; i < list.size() && i < 4; ++i) joined += (i ? ", '" : "'") + list[i] + "'";
-        if (list.size() > 4) joined += " and " + std::to_string(list.size() - 4) + " more";
-        return joined;
-    };
+    auto names = [](const std::vector<std::string>& list) { return quoted_names(list, list.size()); };
     if (!file.skinned_meshes.empty())
         lines.push_back(path.string() + ": ignored skins: meshes drawn in their bind pose (" + names(file.skinned_meshes) + ")");
     if (!file.morphed_meshes.empty())
@@ -164,14 +183,13 @@ std::vector<std::string> animation_warnings(const std::filesystem::path& path, c
 namespace {
 
 /// Glint meshes, placements and (optionally) materials of an assimp scene read from `path`.
-MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, bool convert_materials,
-                       bool smooth_missing_normals) {
+MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, Conversion conversion) {
     MeshFile file;
-    std::size_t dropped = 0, non_triangles = 0, empty = 0;
+    std::size_t empty = 0;
     for (unsigned i = 0; i < ai->mNumMeshes; ++i) {
         const aiMesh* mesh = ai->mMeshes[i];
         file.mesh_materials.push_back(mesh->mMaterialIndex);
-        MeshData data = convert_mesh(mesh, smooth_missing_normals, dropped, non_triangles);
+        MeshData data = convert_mesh(mesh, i, path, conversion);
         if (mesh->HasBones()) file.skinned_meshes.push_back(mesh_name(mesh, i));
         if (mesh->mNumAnimMeshes > 0) file.morphed_meshes.push_back(mesh_name(mesh, i));
         if (data.indices.empty()) {
@@ -181,11 +199,11 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, boo
         }
         file.meshes.push_back(std::make_shared<TriangleMesh>(std::move(data), mesh_name(mesh, i)));
     }
-    if (dropped > 0)
-        file.warnings.push_back(path.string() + ": dropped " + std::to_string(dropped) +
+    if (conversion.dropped > 0)
+        file.warnings.push_back(path.string() + ": dropped " + std::to_string(conversion.dropped) +
                                 " triangle(s) with out-of-range indices or non-finite vertex positions");
-    if (non_triangles > 0)
-        file.warnings.push_back(path.string() + ": ignored " + std::to_string(non_triangles) +
+    if (conversion.non_triangles > 0)
+        file.warnings.push_back(path.string() + ": ignored " + std::to_string(conversion.non_triangles) +
                                 " point/line primitive(s) (Glint renders triangles only)");
     if (empty > 0 && empty < ai->mNumMeshes)
         file.warnings.push_back(path.string() + ": " + std::to_string(empty) + " mesh(es) without triangles skipped");
@@ -202,10 +220,11 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, boo
     };
     visit(ai->mRootNode, Matrix4::identity());
     file.distinct_meshes = groups.size();
-    if (file.placements.empty())
+    // A strict read is merged mesh by mesh, placed or not; load_mesh_data checks for triangles.
+    if (conversion.mode == ReadMode::Lenient && file.placements.empty())
         throw SceneError(path.string() + ": the file has no triangles to render (expected at least one triangle mesh)");
 
-    if (convert_materials) {
+    if (conversion.materials) {
         for (unsigned i = 0; i < ai->mNumMaterials; ++i) {
             file.materials.push_back(convert_assimp_material(ai->mMaterials[i], i));
             file.material_images.push_back(material_image(ai, ai->mMaterials[i], path, file.warnings));
@@ -216,13 +235,14 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, boo
 
 }  // namespace
 
-MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_materials) {
+MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
     if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
     Assimp::Importer importer;
-    const aiScene* ai = importer.ReadFile(path.string(), kImportFlags);
+    const aiScene* ai = importer.ReadFile(path.string(), mode == ReadMode::Strict ? kStrictFlags : kImportFlags);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
         throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
-    return convert_scene(ai, path, convert_materials, true);
+    const bool lenient = mode == ReadMode::Lenient;
+    return convert_scene(ai, path, {.mode = mode, .materials = lenient, .smooth_missing_normals = lenient});
 }
 
 MeshFile read_gltf_geometry(const gltf::Document& doc) {
@@ -232,7 +252,7 @@ MeshFile read_gltf_geometry(const gltf::Document& doc) {
     const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
         throw SceneError(doc.path.string() + ": cannot read the geometry: " + importer.GetErrorString());
-    MeshFile file = convert_scene(ai, doc.path, false, false);
+    MeshFile file = convert_scene(ai, doc.path, {.materials = false, .smooth_missing_normals = false});
     file.warnings.insert(file.warnings.begin(), warnings.begin(), warnings.end());
     // assimp numbers meshes primitive by primitive; the materials come from the JSON.
     std::vector<uint32_t> materials = gltf::primitive_materials(doc);

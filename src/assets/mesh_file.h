@@ -48,10 +48,20 @@ struct MeshFile {
 /// The warning lines for `file`'s skins, morph targets and animations ("path: ...").
 [[nodiscard]] std::vector<std::string> animation_warnings(const std::filesystem::path& path, const MeshFile& file);
 
-/// Read `path` with assimp. `convert_materials`: also convert assimp's materials (glTF
-/// files convert theirs from the JSON instead). Throws SceneError naming the file and the
-/// problem when nothing usable is in it.
-[[nodiscard]] MeshFile read_mesh_file(const std::filesystem::path& path, bool convert_materials);
+/// What the reader does with a triangle it cannot use: one that touches a non-finite
+/// vertex position or (where assimp's validation lets it through) indexes past the vertices.
+enum class ReadMode {
+    /// Refuse the file with the mesh, face or vertex named, and take the geometry as stored:
+    /// no materials, no generated normals (load_mesh_data: tests and benchmarks).
+    Strict,
+    /// Drop the triangle and say so in MeshFile::warnings; convert the file's materials and
+    /// give meshes without normals smooth ones (scenes).
+    Lenient,
+};
+
+/// Read `path` with assimp. Throws SceneError naming the file and the problem when nothing
+/// usable is in it, or, in Strict mode, at the first unusable vertex or triangle.
+[[nodiscard]] MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode);
 
 namespace gltf {
 struct Document;

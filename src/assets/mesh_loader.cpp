@@ -3,17 +3,13 @@
 #include "gltf_document.h"
 #include "gltf_materials.h"
 #include "mesh_file.h"
+#include "place_meshes.h"
 
 #include "glint/diagnostics.h"
 #include "glint/scene/asset_defaults.h"
 #include "glint/util/file_extension.h"
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
 #include <algorithm>
-#include <cctype>
 
 namespace glint {
 
@@ -61,15 +57,14 @@ std::filesystem::path canonical_key(const std::filesystem::path& path) {
 }
 
 /// Convert `file`'s materials into `scene`; returns the scene material of each file material.
-/// glTF materials come from the JSON and may put alpha masks on `meshes`.
-std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, bool is_gltf,
+/// A glTF file's materials come from its document `gltf` (null for other formats) and may
+/// put alpha masks on `meshes`.
+std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, const gltf::Document* gltf,
                                          const std::vector<std::shared_ptr<TriangleMesh>>& meshes,
-                                         const std::filesystem::path& path, std::vector<std::string>& warnings) {
+                                         ImportNotes& notes) {
     std::vector<uint32_t> result;
-    if (is_gltf) {
-        const gltf::Document doc = gltf::read_document(path);
-        gltf::Notes notes;
-        gltf::MaterialConverter converter(doc, scene, notes);
+    if (gltf) {
+        gltf::MaterialConverter converter(*gltf, scene, notes);
         for (std::size_t m = 0; m < meshes.size(); ++m) {
             const uint32_t file_material = file.mesh_materials[m];
             if (result.size() <= file_material) result.resize(file_material + 1, 0);
@@ -77,7 +72,6 @@ std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, boo
             result[file_material] = info.scene_material;
             if (meshes[m] && info.alpha_mask) meshes[m]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
         }
-        for (const std::string& line : notes.ignored_lines()) warnings.push_back(path.string() + ": ignored " + line);
         return result;
     }
     for (std::size_t i = 0; i < file.materials.size(); ++i) {
@@ -91,34 +85,14 @@ std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, boo
 }  // namespace
 
 MeshData load_mesh_data(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
-    Assimp::Importer importer;
-    // Only what merging needs: no validation pass, no vertex joining (file order is kept).
-    const aiScene* ai = importer.ReadFile(path.string(), aiProcess_Triangulate);
-    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
+    const MeshFile file = read_mesh_file(path, ReadMode::Strict);
     MeshData data;
-    for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
-        const aiMesh* mesh = ai->mMeshes[m];
+    for (const auto& mesh : file.meshes) {
+        if (!mesh) continue;  // points or lines only
         const auto base = static_cast<uint32_t>(data.positions.size());
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-            const Vec3 p(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z);
-            if (!is_finite(p))
-                throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": vertex " + std::to_string(v) +
-                                 " has a non-finite position (expected finite coordinates)");
-            data.positions.push_back(p);
-        }
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            const aiFace& face = mesh->mFaces[f];
-            if (face.mNumIndices != 3) continue;
-            for (unsigned k = 0; k < 3; ++k) {
-                if (face.mIndices[k] >= mesh->mNumVertices)
-                    throw SceneError(path.string() + ": mesh " + std::to_string(m) + ": face " + std::to_string(f) +
-                                     " uses vertex " + std::to_string(face.mIndices[k]) + " (expected an index below " +
-                                     std::to_string(mesh->mNumVertices) + ")");
-                data.indices.push_back(base + face.mIndices[k]);
-            }
-        }
+        const MeshData& part = mesh->data();
+        data.positions.insert(data.positions.end(), part.positions.begin(), part.positions.end());
+        for (const uint32_t index : part.indices) data.indices.push_back(base + index);
     }
     if (data.indices.empty()) throw SceneError(path.string() + ": the file has no triangles (expected at least one)");
     return data;
@@ -131,8 +105,17 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
                          " does not exist (the scene has " + std::to_string(scene.materials().size()) + ")");
     const std::filesystem::path key = canonical_key(path);
     MeshImportResult result;
+    ImportNotes notes;
     MeshCache::Entry* entry = files.find(key);
     result.reused = entry != nullptr;
+    // A glTF document, read at most once per call: for the geometry of a file not cached
+    // yet, and for its materials on the first placement that uses them. The cache does not
+    // keep it, since its buffers hold the whole file.
+    std::optional<gltf::Document> doc;
+    auto document = [&]() -> const gltf::Document& {
+        if (!doc) doc = gltf::read_document(path);
+        return *doc;
+    };
     // Strong references for this call: the file's meshes live in the scene once placed.
     std::vector<std::shared_ptr<TriangleMesh>> meshes;
     if (entry) {
@@ -140,7 +123,7 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     } else {
         auto fresh = std::make_unique<MeshCache::Entry>();
         fresh->is_gltf = has_gltf_extension(path);
-        fresh->file = fresh->is_gltf ? read_gltf_geometry(gltf::read_document(path)) : read_mesh_file(path, true);
+        fresh->file = fresh->is_gltf ? read_gltf_geometry(document()) : read_mesh_file(path, ReadMode::Lenient);
         result.warnings = fresh->file.warnings;
         for (std::string& line : animation_warnings(path, fresh->file)) result.warnings.push_back(std::move(line));
         meshes = std::move(fresh->file.meshes);
@@ -149,31 +132,20 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
         entry = &files.insert(key, std::move(fresh));
     }
     if (!override_material && !entry->scene_materials)
-        entry->scene_materials = add_file_materials(scene, entry->file, entry->is_gltf, meshes, path, result.warnings);
+        entry->scene_materials =
+            add_file_materials(scene, entry->file, entry->is_gltf ? &document() : nullptr, meshes, notes);
 
-    for (const MeshPlacement& placement : entry->file.placements) {
-        Transform file_from_mesh;
-        try {
-            file_from_mesh = Transform(placement.file_from_mesh);
-        } catch (const std::invalid_argument&) {
-            result.warnings.push_back(path.string() + ": node '" + placement.node +
-                                      "' has a singular transform; its mesh is skipped");
-            continue;
-        }
-        uint32_t material = 0;
-        if (override_material) {
-            material = *override_material;
-        } else {
-            const uint32_t file_material = entry->file.mesh_materials[placement.mesh];
-            const auto& table = *entry->scene_materials;
-            material = file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
-        }
-        const auto& mesh = meshes[placement.mesh];
-        if (!mesh) continue;  // never placed before (singular transform), so not kept
-        scene.add_object(mesh, material, world_from_file * file_from_mesh, placement.node);
-        ++result.objects;
-        result.triangles += mesh->triangle_count();
-    }
+    auto material = [&](uint32_t mesh) {
+        if (override_material) return *override_material;
+        const uint32_t file_material = entry->file.mesh_materials[mesh];
+        const auto& table = *entry->scene_materials;
+        return file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
+    };
+    const PlacedMeshes placed =
+        place_meshes(scene, entry->file.placements, meshes, world_from_file, material, notes);
+    for (const std::string& line : notes.ignored_lines()) result.warnings.push_back(path.string() + ": ignored " + line);
+    result.objects = placed.objects;
+    result.triangles = placed.instanced_triangles;
     return result;
 }
 

@@ -16,8 +16,10 @@
 namespace glint {
 
 /// Every triangle of every mesh in the file, merged into one MeshData in file order
-/// (vertex and face order and winding as stored; no materials). For tests and benchmarks.
-/// Throws SceneError naming the file and the problem.
+/// (positions and indices only; vertex and face order and winding as stored; node
+/// transforms not applied). For tests and benchmarks, so strict: a non-finite vertex or an
+/// index past the vertices is a SceneError naming the file, the mesh and the vertex or
+/// face, as is a file without triangles.
 [[nodiscard]] MeshData load_mesh_data(const std::filesystem::path& path);
 
 struct MeshImportResult {

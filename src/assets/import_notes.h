@@ -1,15 +1,17 @@
 #pragma once
-/// \file What a glTF import mapped and what it ignored, one line per kind. Internal.
+/// \file What an import mapped and what it ignored, one line per kind. Internal.
+
+#include "name_list.h"
 
 #include <map>
 #include <string>
 #include <vector>
 
-namespace glint::gltf {
+namespace glint {
 
 /// Collects ignored features by kind so that a file with a hundred normal-mapped materials
 /// gives one warning line, not a hundred.
-class Notes {
+class ImportNotes {
 public:
     /// Something mapped, for `glint info`.
     void mapped(std::string line) { mapped_.push_back(std::move(line)); }
@@ -17,7 +19,7 @@ public:
     void ignored(const std::string& what, const std::string& where) {
         auto [it, inserted] = ignored_.try_emplace(what);
         if (inserted) order_.push_back(what);
-        if (!where.empty() && it->second.size() < 4) it->second.push_back(where);
+        if (!where.empty() && it->second.size() < kListedNames) it->second.push_back(where);
         ++counts_[what];
     }
     /// True if `what` was reported as ignored.
@@ -29,13 +31,7 @@ public:
         for (const std::string& what : order_) {
             const auto& where = ignored_.at(what);
             std::string line = what;
-            if (!where.empty()) {
-                line += " (on ";
-                for (std::size_t i = 0; i < where.size(); ++i) line += (i ? ", '" : "'") + where[i] + "'";
-                const std::size_t more = counts_.at(what) - where.size();
-                if (more > 0) line += " and " + std::to_string(more) + " more";
-                line += ")";
-            }
+            if (!where.empty()) line += " (on " + quoted_names(where, counts_.at(what)) + ")";
             lines.push_back(std::move(line));
         }
         return lines;
@@ -48,4 +44,4 @@ private:
     std::map<std::string, std::size_t> counts_;
 };
 
-}  // namespace glint::gltf
+}  // namespace glint

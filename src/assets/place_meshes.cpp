@@ -1,0 +1,31 @@
+#include "place_meshes.h"
+
+#include <stdexcept>
+
+namespace glint {
+
+PlacedMeshes place_meshes(Scene& scene, const std::vector<MeshPlacement>& placements,
+                          const std::vector<std::shared_ptr<TriangleMesh>>& meshes, const Transform& world_from_file,
+                          const std::function<uint32_t(uint32_t mesh)>& material, ImportNotes& notes) {
+    PlacedMeshes placed;
+    for (const MeshPlacement& placement : placements) {
+        Transform file_from_mesh;
+        try {
+            file_from_mesh = Transform(placement.file_from_mesh);
+        } catch (const std::invalid_argument&) {
+            notes.ignored("node with a singular transform (scale 0)", placement.node);
+            continue;
+        }
+        // Null for a mesh without triangles, or one a cached file never placed (a
+        // singular node's) and so did not keep.
+        const auto& mesh = meshes[placement.mesh];
+        if (!mesh) continue;
+        scene.add_object(mesh, material(placement.mesh), world_from_file * file_from_mesh, placement.node);
+        ++placed.objects;
+        placed.instanced_triangles += mesh->triangle_count();
+        placed.meshes.insert(mesh.get());
+    }
+    return placed;
+}
+
+}  // namespace glint
