@@ -4,25 +4,24 @@
 #include "info_command.h"
 #include "progress_bar.h"
 #include "scene_source.h"
+#include "timing.h"
 
 #include "glint/image/image_io.h"
 #include "glint/image/filter.h"
 #include "glint/integrators/integrator_registry.h"
+#include "glint/integrators/render_settings.h"
 #include "glint/io/scene_file.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
-#include <chrono>
-#include <cmath>
 #include <optional>
 #include <unistd.h>
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+using glint::app::Clock;
+using glint::app::seconds_since;
 
 struct RenderOptions {
     std::string scene_path;
@@ -37,15 +36,6 @@ struct RenderOptions {
     bool quiet = false;
 };
 
-/// Samples per pixel must be N² for N×N stratification.
-uint32_t samples_per_axis(uint32_t spp) {
-    const auto n = static_cast<uint32_t>(std::lround(std::sqrt(double(spp))));
-    if (spp == 0 || n * n != spp)
-        throw std::invalid_argument(fmt::format(
-            "--spp {} is not a square number: Glint takes N×N stratified samples (1, 4, 9, 16, 25, ...)", spp));
-    return n;
-}
-
 int run_render(const RenderOptions& opt) {
     const auto load_start = Clock::now();
     glint::app::SceneSource source = glint::app::load_scene(opt.scene_path, opt.scene);
@@ -55,7 +45,13 @@ int run_render(const RenderOptions& opt) {
     glint::RenderSettings& s = loaded.settings;
     if (opt.width) s.width = *opt.width;
     if (opt.height) s.height = *opt.height;
-    if (opt.spp) s.samples_per_axis = samples_per_axis(*opt.spp);
+    if (opt.spp) {
+        const std::optional<uint32_t> n = glint::samples_per_axis(*opt.spp);
+        if (!n)
+            throw std::invalid_argument(fmt::format(
+                "--spp {} is not a square number: Glint takes N×N stratified samples (1, 4, 9, 16, 25, ...)", *opt.spp));
+        s.samples_per_axis = *n;
+    }
     if (opt.depth) s.max_depth = *opt.depth;
     if (opt.threads) s.threads = *opt.threads;
     if (opt.seed) s.seed = *opt.seed;
