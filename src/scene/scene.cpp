@@ -28,6 +28,11 @@ const Texture* Scene::add_texture(std::unique_ptr<Texture> texture) {
     return textures_.back().get();
 }
 
+std::size_t Scene::texture_count() const {
+    return static_cast<std::size_t>(
+        std::count_if(textures_.begin(), textures_.end(), [](const auto& t) { return !t->is_view(); }));
+}
+
 void Scene::add_light(std::unique_ptr<Light> light) {
     lights_.push_back(std::move(light));
     prepared_ = false;
@@ -175,11 +180,10 @@ SceneStatistics Scene::statistics() const {
     s.objects = objects_.size();
     std::unordered_set<const Shape*> seen;
     for (const SceneObject& o : objects_) {
-        const bool triangles = o.shape->type_name() == "mesh";
-        if (triangles) s.instanced_triangles += o.shape->primitive_count();
+        s.instanced_triangles += o.shape->triangle_count();
         if (seen.insert(o.shape.get()).second) {
             ++s.unique_shapes;
-            if (triangles) s.unique_triangles += o.shape->primitive_count();
+            s.unique_triangles += o.shape->triangle_count();
             s.memory_bytes += o.shape->memory_bytes();
         }
     }
