@@ -40,7 +40,10 @@ int run_render(const RenderOptions& opt) {
     const auto load_start = Clock::now();
     glint::app::SceneSource source = glint::app::load_scene(opt.scene_path, opt.scene);
     glint::LoadedScene& loaded = source.loaded;
-    for (const std::string& w : loaded.warnings) fmt::print(stderr, "warning: {}\n", w);
+    auto warn = [&](const std::string& w) {
+        if (!opt.quiet) fmt::print(stderr, "warning: {}\n", w);
+    };
+    for (const std::string& w : loaded.warnings) warn(w);
 
     glint::RenderSettings& s = loaded.settings;
     if (opt.width) s.width = *opt.width;
@@ -79,7 +82,7 @@ int run_render(const RenderOptions& opt) {
 
     glint::Film film(s.width, s.height);
     const std::unique_ptr<glint::Integrator> integrator = glint::make_integrator(s);
-    for (const std::string& w : integrator->warnings(loaded.scene)) fmt::print(stderr, "warning: {}\n", w);
+    for (const std::string& w : integrator->warnings(loaded.scene)) warn(w);
     glint::app::ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
     const glint::RenderStats stats =
         integrator->render(loaded.scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
@@ -89,6 +92,7 @@ int run_render(const RenderOptions& opt) {
     write_options.exposure = opt.exposure;
     glint::write_image(output, film.to_image(), write_options);
 
+    if (opt.quiet) return 0;
     const double mrays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds * 1e-6 : 0.0;
     fmt::print("{}x{}, {} spp: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}\n",
                s.width, s.height, s.samples_per_axis * s.samples_per_axis, load_seconds, build_seconds, stats.seconds,
@@ -129,7 +133,7 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--mis", render.mis, "Path: multiple importance sampling heuristic")
         ->check(CLI::IsMember({"balance", "power"}));
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG/JPEG/TIFF output");
-    render_cmd->add_flag("-q,--quiet", render.quiet, "No progress bar");
+    render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors: no progress bar, warnings or summary");
     glint::app::add_scene_options(render_cmd, render.scene);
 
     std::string info_path;
