@@ -1,6 +1,7 @@
 #pragma once
 /// \file The bottom-level structure of a triangle mesh: an 8-wide BVH whose leaves hold up
-/// to four triangles (one block), copied in leaf order and tested together with SSE.
+/// to four triangles (one block), copied in leaf order and tested together with SSE
+/// (x86-64; other targets test them one by one with the scalar watertight test).
 ///
 /// One block per leaf was measured on the shared meshes: leaves of two or four blocks save
 /// 10% memory but cost up to 15% on incoherent rays.
@@ -14,7 +15,9 @@
 #include "glint/geometry/hit.h"
 #include "glint/geometry/triangle.h"
 
+#if defined(__SSE2__)
 #include <immintrin.h>
+#endif
 
 #include <span>
 #include <type_traits>
@@ -69,6 +72,7 @@ private:
 
 namespace detail {
 
+#if defined(__SSE2__)
 /// `x`, hidden from the optimiser so that a product is rounded on its own, never fused.
 inline __m128 opaque_float(__m128 x) {
     __asm__("" : "+x"(x));
@@ -84,6 +88,14 @@ struct BlockRay {
         : ray(ray_), w(ray.direction), ox(_mm_set1_ps(ray.origin[w.kx])), oy(_mm_set1_ps(ray.origin[w.ky])),
           oz(_mm_set1_ps(ray.origin[w.kz])), sx(_mm_set1_ps(w.sx)), sy(_mm_set1_ps(w.sy)), sz(_mm_set1_ps(w.sz)) {}
 };
+#else
+/// The watertight test's per-ray constants.
+struct BlockRay {
+    Ray ray;
+    WatertightRay w;
+    explicit BlockRay(const Ray& ray_) : ray(ray_), w(ray.direction) {}
+};
+#endif
 
 /// intersect_triangle_watertight for four triangles at once, the same arithmetic in the
 /// same order; returns the lanes that hit and writes their t and barycentrics.
