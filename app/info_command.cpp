@@ -1,19 +1,16 @@
 #include "info_command.h"
 
+#include "timing.h"
+
 #include "glint/scene/render_scene.h"
 
 #include <fmt/core.h>
 
-#include <chrono>
 #include <map>
 
 namespace glint::app {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 std::string megabytes(std::size_t bytes) { return fmt::format("{:.1f} MB", double(bytes) / (1024.0 * 1024.0)); }
 

@@ -4,26 +4,25 @@
 #include "info_command.h"
 #include "progress_bar.h"
 #include "scene_source.h"
+#include "timing.h"
 
 #include "glint/image/image_io.h"
 #include "glint/image/filter.h"
 #include "glint/integrators/integrator_registry.h"
+#include "glint/integrators/render_settings.h"
 #include "glint/scene/render_scene.h"
 #include "glint/scene_file.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
-#include <chrono>
-#include <cmath>
 #include <optional>
 #include <unistd.h>
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+using glint::app::Clock;
+using glint::app::seconds_since;
 
 struct RenderOptions {
     std::string scene_path;
@@ -38,25 +37,25 @@ struct RenderOptions {
     bool quiet = false;
 };
 
-/// Samples per pixel must be N² for N×N stratification.
-uint32_t samples_per_axis(uint32_t spp) {
-    const auto n = static_cast<uint32_t>(std::lround(std::sqrt(double(spp))));
-    if (spp == 0 || n * n != spp)
-        throw std::invalid_argument(fmt::format(
-            "--spp {} is not a square number: Glint takes N×N stratified samples (1, 4, 9, 16, 25, ...)", spp));
-    return n;
-}
-
 int run_render(const RenderOptions& opt) {
     const auto load_start = Clock::now();
     glint::app::SceneSource source = glint::app::load_scene(opt.scene_path, opt.scene);
     glint::LoadedScene& loaded = source.loaded;
-    for (const std::string& w : loaded.warnings) fmt::print(stderr, "warning: {}\n", w);
+    auto warn = [&](const std::string& w) {
+        if (!opt.quiet) fmt::print(stderr, "warning: {}\n", w);
+    };
+    for (const std::string& w : loaded.warnings) warn(w);
 
     glint::RenderSettings& s = loaded.settings;
     if (opt.width) s.width = *opt.width;
     if (opt.height) s.height = *opt.height;
-    if (opt.spp) s.samples_per_axis = samples_per_axis(*opt.spp);
+    if (opt.spp) {
+        const std::optional<uint32_t> n = glint::samples_per_axis(*opt.spp);
+        if (!n)
+            throw std::invalid_argument(fmt::format(
+                "--spp {} is not a square number: Glint takes N×N stratified samples (1, 4, 9, 16, 25, ...)", *opt.spp));
+        s.samples_per_axis = *n;
+    }
     if (opt.depth) s.max_depth = *opt.depth;
     if (opt.threads) s.threads = *opt.threads;
     if (opt.seed) s.seed = *opt.seed;
@@ -84,7 +83,7 @@ int run_render(const RenderOptions& opt) {
 
     glint::Film film(s.width, s.height);
     const std::unique_ptr<glint::Integrator> integrator = glint::make_integrator(s);
-    for (const std::string& w : integrator->warnings(scene)) fmt::print(stderr, "warning: {}\n", w);
+    for (const std::string& w : integrator->warnings(scene)) warn(w);
     glint::app::ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
     const glint::RenderStats stats =
         integrator->render(scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
@@ -94,6 +93,7 @@ int run_render(const RenderOptions& opt) {
     write_options.exposure = opt.exposure;
     glint::write_image(output, film.to_image(), write_options);
 
+    if (opt.quiet) return 0;
     const double mrays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds * 1e-6 : 0.0;
     fmt::print("{}x{}, {} spp: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}\n",
                s.width, s.height, s.samples_per_axis * s.samples_per_axis, load_seconds, build_seconds, stats.seconds,
@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--mis", render.mis, "Path: multiple importance sampling heuristic")
         ->check(CLI::IsMember({"balance", "power"}));
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG/JPEG/TIFF output");
-    render_cmd->add_flag("-q,--quiet", render.quiet, "No progress bar");
+    render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors: no progress bar, warnings or summary");
     glint::app::add_scene_options(render_cmd, render.scene);
 
     std::string info_path;

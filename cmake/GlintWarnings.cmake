@@ -1,5 +1,6 @@
-# Compiler options shared by every Glint target, as one INTERFACE target
-# (the pbrt-v4 `pbrt_warnings` pattern): link it, never set flags globally.
+# Compiler options of Glint's own targets (library, CLI, tests, bench, examples), as one
+# INTERFACE target (the pbrt-v4 `pbrt_warnings` pattern): each links it PRIVATE, never set
+# flags globally. So warnings and -march=native never reach a program that links libglint.
 add_library(glint_options INTERFACE)
 target_compile_options(glint_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow=local)
 if(GLINT_NATIVE)

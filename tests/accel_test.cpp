@@ -1,5 +1,6 @@
 // Differential and invariant tests of the acceleration structures: the 8-wide mesh BVH
-// against brute force on the shared Stanford meshes, watertightness on closed meshes,
+// against brute force on mesh files (one in the tree, the shared Stanford meshes when
+// present), watertightness on closed meshes,
 // instancing through the scene's top level, degenerate inputs.
 
 #include "glint/accel/brute_force.h"
@@ -24,6 +25,7 @@ namespace glint {
 namespace {
 
 const std::filesystem::path kMeshDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
+const std::filesystem::path kTestDataDir = std::filesystem::path(GLINT_SOURCE_DIR) / "tests" / "data";
 
 /// Closest hit by testing every triangle with the same watertight routine.
 bool brute_force_intersect(const TriangleMesh& mesh, Ray& ray, Hit& hit) {
@@ -69,20 +71,25 @@ void expect_agreement(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
     EXPECT_GT(hits, int(rays.size()) / 10) << "the rays should mostly hit the mesh";
 }
 
-class SharedMesh : public testing::TestWithParam<const char*> {};
+/// A mesh file by its full path (a string: gtest prints it in the test's parameters).
+class MeshFile : public testing::TestWithParam<std::string> {};
 
-TEST_P(SharedMesh, BvhAgreesWithBruteForce) {
-    const std::filesystem::path path = kMeshDir / GetParam();
+TEST_P(MeshFile, BvhAgreesWithBruteForce) {
+    const std::filesystem::path path = GetParam();
     if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (shared data absent)";
-    TriangleMesh mesh(load_mesh_data(path), GetParam());
+    TriangleMesh mesh(load_mesh_data(path), path.filename().string());
     mesh.prepare();
     // Brute force costs rays × triangles: 2,000 rays keep the three meshes under a few seconds.
     expect_agreement(mesh, random_rays(mesh.bounds(), 2000, 7));
 }
 
+// In every clone: a 320-triangle icosphere, so the test never depends on shared data alone.
+INSTANTIATE_TEST_SUITE_P(InTree, MeshFile, testing::Values((kTestDataDir / "icosphere.ply").string()));
 // The 871k-triangle dragon is left to glint-bench, whose checksums compare it with Embree.
-INSTANTIATE_TEST_SUITE_P(Stanford, SharedMesh,
-                         testing::Values("stanford_bunny.ply", "stanford_lucy_100k.ply", "stanford_dragon_res2.ply"));
+INSTANTIATE_TEST_SUITE_P(Stanford, MeshFile,
+                         testing::Values((kMeshDir / "stanford_bunny.ply").string(),
+                                         (kMeshDir / "stanford_lucy_100k.ply").string(),
+                                         (kMeshDir / "stanford_dragon_res2.ply").string()));
 
 /// An icosahedron subdivided `levels` times and pushed onto the unit sphere: closed,
 /// every edge shared by two triangles.

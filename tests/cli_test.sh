@@ -3,6 +3,7 @@
 # failed run leaves no output file. Usage: cli_test.sh GLINT_BINARY
 set -u
 glint=$1
+scenes=$(cd "$(dirname "${BASH_SOURCE[0]}")/../scenes" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -10,7 +11,7 @@ failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # 1. The built-in scene renders, and the last line reports times and rays per second.
-out=$("$glint" render -o default.png --width 40 --height 30 --quiet) || fail "default render exited non-zero"
+out=$("$glint" render -o default.png --width 40 --height 30) || fail "default render exited non-zero"
 [ -s default.png ] || fail "default render wrote no image"
 echo "$out" | grep -Eq 'load [0-9.]+ s, build [0-9.]+ s, render [0-9.]+ s, [0-9.]+ M rays \([0-9.]+ M rays/s\)' ||
   fail "final line lacks times and rays per second: $out"
@@ -45,7 +46,8 @@ grep -Eq 'typo\.toml:[0-9]+:[0-9]+: ' err.txt || fail "scene error lacks file:li
 ls -A | grep -q partial && fail "a temporary file was left behind"
 
 # 5. Integrators by name: both render, an unknown one is refused with the known names, and
-# the path tracer says once that it ignores the ambient term of a Whitted scene.
+# the path tracer says once that it ignores the ambient term of a Whitted scene (and with
+# -q says nothing at all: -q prints errors only).
 cat > lit.toml <<'TOML'
 [world]
 ambient_light = 0.1
@@ -63,16 +65,28 @@ material = "white"
 TOML
 "$glint" render lit.toml -o whitted.png --width 16 --height 12 --light-samples 4 -q >/dev/null ||
   fail "whitted with an area light failed"
-"$glint" render lit.toml -o path.png --width 16 --height 12 --integrator path -q >/dev/null 2>err.txt ||
+"$glint" render lit.toml -o path.png --width 16 --height 12 --integrator path >/dev/null 2>err.txt ||
   fail "path render failed: $(cat err.txt)"
 [ -s path.png ] || fail "path render wrote no image"
 [ "$(grep -c 'ignores \[world\] ambient_light' err.txt)" -eq 1 ] || fail "path: no single ambient warning: $(cat err.txt)"
+"$glint" render lit.toml -o quiet.png --width 16 --height 12 --integrator path -q >out.txt 2>err.txt ||
+  fail "quiet path render failed: $(cat err.txt)"
+[ -s quiet.png ] || fail "quiet path render wrote no image"
+[ -s out.txt ] && fail "-q printed on stdout: $(cat out.txt)"
+[ -s err.txt ] && fail "-q printed on stderr: $(cat err.txt)"
 "$glint" info lit.toml | grep -q "lights: *1: 1 area" || fail "info does not count the area light: $("$glint" info lit.toml)"
 if "$glint" render lit.toml -o unknown.png --integrator pathtracer -q 2>err.txt; then fail "unknown integrator accepted"; fi
 grep -q "whitted" err.txt || fail "unknown integrator error does not list the known ones: $(cat err.txt)"
 [ -e unknown.png ] && fail "unknown integrator left a file"
 if "$glint" render lit.toml -o f.png --filter lanczos -q 2>err.txt; then fail "unknown filter accepted"; fi
 grep -q "mitchell" err.txt || fail "unknown filter error does not list the known ones: $(cat err.txt)"
+
+# 6. info counts the triangles of every shape that has them: pool.toml's water is a
+# heightfield of 61 × 101 vertices, 2 × 60 × 100 triangles, and the scene holds no mesh.
+out=$("$glint" info "$scenes/pool.toml") || fail "info pool.toml failed"
+echo "$out" | grep -q "triangles: *12000 unique, 12000 instanced" || fail "info miscounts heightfield triangles: $out"
+# pool.toml declares three [[textures]], two of them with uv_scale (a view, not a texture).
+echo "$out" | grep -q "textures: *3$" || fail "info miscounts declared textures: $out"
 
 echo "$(( failures == 0 ? 1 : 0 )) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -99,6 +99,7 @@ TEST(Sphere, ReintersectFromOffsetOriginNeverHitsAgain) {
     // pbrt-v4's invariant: a ray leaving a convex shape outward never hits it again.
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> u(0.01f, 1000.0f);
+    int hits = 0;
     for (int i = 0; i < 1000; ++i) {
         const float radius = u(rng);
         const Sphere s(random_unit(rng) * u(rng), radius);
@@ -106,6 +107,7 @@ TEST(Sphere, ReintersectFromOffsetOriginNeverHitsAgain) {
         r.direction = normalize(s.center() - r.origin + random_unit(rng) * (radius * 0.5f));
         Hit h;
         if (!s.intersect(r, h)) continue;
+        ++hits;
         SurfaceInteraction si;
         s.interaction(r, h, si);
         Vec3 out = random_unit(rng);
@@ -114,6 +116,9 @@ TEST(Sphere, ReintersectFromOffsetOriginNeverHitsAgain) {
         Hit h2;
         EXPECT_FALSE(s.intersect(again, h2)) << "radius " << radius;
     }
+    // Every ray aims within half a radius of the centre, so all should hit: without
+    // hits the invariant above would hold vacuously.
+    EXPECT_EQ(hits, 1000);
 }
 
 // ---- Triangle (seminar's Cramer's rule) --------------------------------------------------

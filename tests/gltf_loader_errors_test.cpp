@@ -107,7 +107,7 @@ TEST(GltfErrors, MissingTextureWarnsAndRenders) {
     const glint::GltfScene s = glint::load_gltf_scene(path);
     EXPECT_TRUE(has_warning(s.loaded.warnings, "quad.gltf", "gone.png"));
     EXPECT_EQ(s.loaded.scene.materials()[0].texture, nullptr);
-    const CliResult r = run_cli("render " + path.string() + " -q --width 8 --height 6 -o " + (dir / "x.png").string(), dir);
+    const CliResult r = run_cli("render " + path.string() + " --width 8 --height 6 -o " + (dir / "x.png").string(), dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("gone.png"), std::string::npos) << r.err;
     EXPECT_TRUE(fs::exists(dir / "x.png"));

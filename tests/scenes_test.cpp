@@ -110,15 +110,7 @@ class SceneReference : public testing::TestWithParam<std::string> {};
 
 TEST_P(SceneReference, MatchesReference) {
     const std::string name = GetParam();
-    LoadedScene loaded;
-    try {
-        loaded = load_toml_scene(kSource / "scenes" / (name + ".toml"));
-    } catch (const SceneError& e) {
-        // Mesh import is another part of the issue; until it lands, scenes with mesh files wait.
-        if (std::string(e.what()).find("not implemented") != std::string::npos)
-            GTEST_SKIP() << name << ".toml needs import_mesh_file, which is not implemented yet: " << e.what();
-        throw;
-    }
+    LoadedScene loaded = load_toml_scene(kSource / "scenes" / (name + ".toml"));
     const Image image = render(loaded);
     const std::filesystem::path reference_path = kSource / "tests" / "references" / (name + ".exr");
     if (updating_references()) {

@@ -18,9 +18,6 @@ constexpr uint32_t kMaxBins = 64;
 constexpr uint32_t kParallelScan = 1u << 15;
 /// Subtrees at least this large are built as separate tasks.
 constexpr uint32_t kParallelTask = 1u << 11;
-/// Below this depth the SAH decides; deeper (only for pathological inputs) the builder
-/// splits at the object median, which bounds the depth and so the traversal stacks.
-constexpr int kMaxSahDepth = 48;
 
 struct PrimRef {
     Bounds3 bounds;

@@ -16,41 +16,37 @@ void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_
             boxes[t] = b;
         }
     });
+    // At most four triangles per leaf: one block, so leaf k's triangles become block k.
     BvhBuildConfig config;
-    config.max_leaf_size = kMaxLeafBlocks * TriangleBlock::kWidth;
+    config.max_leaf_size = TriangleBlock::kWidth;
     config.leaf_block_log2 = 2;
     wide_.build(boxes, config);
     const std::span<const WideLeaf> leaves = wide_.leaves();
     const std::span<const uint32_t> order = wide_.primitive_order();
-    // Each leaf gets whole blocks, consecutive in leaf order.
-    std::vector<uint32_t> first_block(leaves.size() + 1, 0);
-    for (size_t l = 0; l < leaves.size(); ++l)
-        first_block[l + 1] = first_block[l] + (leaves[l].count + TriangleBlock::kWidth - 1) / TriangleBlock::kWidth;
-    blocks_.assign(first_block.back(), TriangleBlock{});
+    blocks_.assign(leaves.size(), TriangleBlock{});
     tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size(), 1u << 12), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t l = r.begin(); l < r.end(); ++l) {
-            for (uint32_t k = 0; k < first_block[l + 1] - first_block[l]; ++k) {
-                TriangleBlock& block = blocks_[first_block[l] + k];
-                for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
-                    const uint32_t entry = k * TriangleBlock::kWidth + lane;
-                    // Unused lanes get NaN vertices: every comparison fails, never a hit.
-                    block.triangle[lane] = kNoHit;
-                    if (entry >= leaves[l].count) {
-                        for (auto& vertex : block.v)
-                            for (auto& axis : vertex) axis[lane] = std::numeric_limits<float>::quiet_NaN();
-                        continue;
-                    }
-                    const uint32_t tri = order[leaves[l].first + entry];
-                    block.triangle[lane] = tri;
-                    for (int vtx = 0; vtx < 3; ++vtx) {
-                        const Vec3& p = positions[indices[3 * size_t(tri) + vtx]];
-                        for (int a = 0; a < 3; ++a) block.v[vtx][a][lane] = p[a];
-                    }
+            TriangleBlock& block = blocks_[l];
+            for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
+                // Unused lanes get NaN vertices: every comparison fails, never a hit.
+                block.triangle[lane] = kNoHit;
+                if (lane >= leaves[l].count) {
+                    for (auto& vertex : block.v)
+                        for (auto& axis : vertex) axis[lane] = std::numeric_limits<float>::quiet_NaN();
+                    continue;
+                }
+                const uint32_t tri = order[leaves[l].first + lane];
+                block.triangle[lane] = tri;
+                for (int vtx = 0; vtx < 3; ++vtx) {
+                    const Vec3& p = positions[indices[3 * size_t(tri) + vtx]];
+                    for (int a = 0; a < 3; ++a) block.v[vtx][a][lane] = p[a];
                 }
             }
         }
     });
-    wide_.encode_leaves([&](uint32_t leaf) { return encode_leaf(first_block[leaf], first_block[leaf + 1] - first_block[leaf]); });
+    // The leaf index is already the block index; encoding frees the leaf ranges and the
+    // order, which the blocks now hold.
+    wide_.encode_leaves([](uint32_t leaf) { return leaf; });
 }
 
 }  // namespace glint

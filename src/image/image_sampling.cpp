@@ -34,4 +34,14 @@ void sample_bilinear(const Image& img, const Vec2& uv, WrapMode wrap_u, WrapMode
     }
 }
 
+Color sample_bilinear_color(const Image& image, const Vec2& uv, WrapMode wrap_u, WrapMode wrap_v) {
+    float rgb[3];
+    if (image.channels >= 3) {
+        sample_bilinear(image, uv, wrap_u, wrap_v, 0, 3, rgb);
+        return {rgb[0], rgb[1], rgb[2]};
+    }
+    sample_bilinear(image, uv, wrap_u, wrap_v, 0, 1, rgb);
+    return Color(rgb[0]);
+}
+
 }  // namespace glint

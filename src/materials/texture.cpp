@@ -16,13 +16,7 @@ void ImageTexture::lookup(const Vec2& uv, int first, int count, float* out) cons
 
 Color ImageTexture::evaluate(const Vec2& uv, const Vec3&) const {
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return scale_;
-    float rgb[3];
-    if (image_->channels >= 3) {
-        lookup(uv, 0, 3, rgb);
-        return Color(rgb[0], rgb[1], rgb[2]) * scale_;
-    }
-    lookup(uv, 0, 1, rgb);
-    return Color(rgb[0]) * scale_;
+    return sample_bilinear_color(*image_, uv, wrap_, wrap_) * scale_;
 }
 
 float ImageTexture::alpha(const Vec2& uv) const {

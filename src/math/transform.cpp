@@ -103,20 +103,6 @@ Transform Transform::rotate(float deg, const Vec3& axis_in) {
     return {m, m.transposed()};
 }
 
-Transform Transform::look_at(const Vec3& eye, const Vec3& target, const Vec3& up) {
-    const Vec3 back = normalize(eye - target);
-    const Vec3 right = normalize(cross(up, back));
-    const Vec3 true_up = cross(back, right);
-    Matrix4 m = Matrix4::identity();
-    for (int i = 0; i < 3; ++i) {
-        m.m[i][0] = right[i];
-        m.m[i][1] = true_up[i];
-        m.m[i][2] = back[i];
-        m.m[i][3] = eye[i];
-    }
-    return Transform(m);
-}
-
 Transform Transform::operator*(const Transform& o) const { return {m_ * o.m_, o.inv_ * inv_}; }
 
 bool Transform::is_identity() const { return m_ == Matrix4::identity(); }

@@ -52,13 +52,7 @@ Color Background::evaluate(const Vec3& direction) const {
     // Bilinear: an environment seen directly fills many pixels per texel. Longitude wraps
     // around in a latitude-longitude map; everything else clamps at the border.
     const WrapMode wrap_u = kind_ == BackgroundKind::Equirectangular ? WrapMode::Repeat : WrapMode::Clamp;
-    float rgb[3];
-    if (image_->channels >= 3) {
-        sample_bilinear(*image_, uv, wrap_u, WrapMode::Clamp, 0, 3, rgb);
-        return Color(rgb[0], rgb[1], rgb[2]) * scale_;
-    }
-    sample_bilinear(*image_, uv, wrap_u, WrapMode::Clamp, 0, 1, rgb);
-    return Color(rgb[0]) * scale_;
+    return sample_bilinear_color(*image_, uv, wrap_u, WrapMode::Clamp) * scale_;
 }
 
 }  // namespace glint

@@ -8,8 +8,7 @@
 namespace glint {
 
 Scene make_spheres_scene(bool refraction_variant) {
-    Scene scene;
-    scene.camera = Camera::perspective({22.0f, 24.0f, 26.0f}, {0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 52.0f);
+    Scene scene;  // its camera is Camera's default, the seminar's
     scene.background = Background::constant(Color(0.05f, 0.07f, 0.12f));
     scene.ambient_light = Color(0.1f);
     scene.dielectric_shadows = DielectricShadows::Opaque;

@@ -123,11 +123,10 @@ SceneStatistics RenderScene::statistics() const {
     s.objects = objects.size();
     std::unordered_set<const Shape*> seen;
     for (const SceneObject& o : objects) {
-        const bool triangles = o.shape->type_name() == "mesh";
-        if (triangles) s.instanced_triangles += o.shape->primitive_count();
+        s.instanced_triangles += o.shape->triangle_count();
         if (seen.insert(o.shape.get()).second) {
             ++s.unique_shapes;
-            if (triangles) s.unique_triangles += o.shape->primitive_count();
+            s.unique_triangles += o.shape->triangle_count();
             s.memory_bytes += o.shape->memory_bytes();
         }
     }

@@ -25,6 +25,11 @@ const Texture* Scene::add_texture(std::unique_ptr<Texture> texture) {
     return textures_.back().get();
 }
 
+std::size_t Scene::texture_count() const {
+    return static_cast<std::size_t>(
+        std::count_if(textures_.begin(), textures_.end(), [](const auto& t) { return !t->is_view(); }));
+}
+
 void Scene::add_light(std::unique_ptr<Light> light) { lights_.push_back(std::move(light)); }
 
 uint32_t Scene::add_area_light(std::shared_ptr<Shape> shape, const Emitter& emitter,

@@ -12,7 +12,6 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <cmath>
 
 namespace glint {
 
@@ -34,10 +33,9 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     s.width = count(t, "width", s.width, 1, 16384);
     s.height = count(t, "height", s.height, 1, 16384);
     // Samples per pixel, as on the command line: N² for N×N stratified samples.
-    const uint32_t spp = count(t, "spp", 1, 1, 4096);
-    s.samples_per_axis = static_cast<uint32_t>(std::lround(std::sqrt(double(spp))));
-    if (s.samples_per_axis * s.samples_per_axis != spp)
-        t.fail("spp", "a square number of samples per pixel (1, 4, 9, 16, ...): Glint takes N×N stratified samples");
+    const std::optional<uint32_t> n = samples_per_axis(count(t, "spp", 1, 1, 4096));
+    if (!n) t.fail("spp", "a square number of samples per pixel (1, 4, 9, 16, ...): Glint takes N×N stratified samples");
+    s.samples_per_axis = *n;
     s.max_depth = count(t, "max_depth", s.max_depth, 0, 64);
     const int64_t seed = t.integer("seed", 0);
     if (seed < 0) t.fail("seed", "a non-negative integer");

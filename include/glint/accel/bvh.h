@@ -48,7 +48,9 @@ template <bool AnyHit, typename IntersectPrimitive>
 bool Bvh::traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const {
     if (nodes_.empty()) return false;
     const Vec3 inv_dir(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z);
-    constexpr int kStackSize = 64;
+    // Every inner node on the way down pushes at most one child, and no leaf lies deeper
+    // than kMaxBinaryBvhDepth.
+    constexpr int kStackSize = kMaxBinaryBvhDepth;
     uint32_t stack[kStackSize];
     int top = 0;
     bool hit = false;

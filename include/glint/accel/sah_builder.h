@@ -41,6 +41,14 @@ struct BinaryBvh {
     std::vector<uint32_t> order;
 };
 
+/// Above this depth the SAH decides splits; from it on (only for pathological inputs) the
+/// builder splits at the object median.
+inline constexpr int kMaxSahDepth = 48;
+/// The deepest leaf build_binary_bvh makes (the root has depth 0): median splits halve the
+/// fewer than 2^32 primitives at every level, so at most 32 levels follow the SAH's.
+/// Traversal stacks are sized from it, so no tree can overflow them.
+inline constexpr int kMaxBinaryBvhDepth = kMaxSahDepth + 32;
+
 /// Binned SAH build (Wald 2007, "On fast Construction of SAH-based Bounding Volume
 /// Hierarchies"), parallel over subtrees and, near the root, over primitives (oneTBB; it
 /// runs in the caller's task arena, so the arena decides the thread count). Primitives with

@@ -1,6 +1,10 @@
 #pragma once
 /// \file The bottom-level structure of a triangle mesh: an 8-wide BVH whose leaves hold up
-/// to four triangles, copied in leaf order and tested together with SSE.
+/// to four triangles (one block), copied in leaf order and tested together with SSE
+/// (x86-64; other targets test them one by one with the scalar watertight test).
+///
+/// One block per leaf was measured on the shared meshes: leaves of two or four blocks save
+/// 10% memory but cost up to 15% on incoherent rays.
 ///
 /// Copying the vertices (36 bytes per triangle, plus the index) into the leaves costs
 /// memory but saves the index indirection and its cache misses on every leaf visit; the
@@ -11,7 +15,9 @@
 #include "glint/geometry/hit.h"
 #include "glint/geometry/triangle.h"
 
+#if defined(__SSE2__)
 #include <immintrin.h>
+#endif
 
 #include <span>
 #include <type_traits>
@@ -50,7 +56,7 @@ public:
     [[nodiscard]] bool empty() const { return blocks_.empty(); }
     /// Box of all triangles.
     [[nodiscard]] Bounds3 bounds() const { return wide_.bounds(); }
-    /// The nodes; their leaf references are encoded block ranges (see encode_leaf).
+    /// The nodes; a leaf reference is the index of the leaf's block.
     [[nodiscard]] const WideBvh& wide_bvh() const { return wide_; }
     /// The leaf blocks, in traversal order.
     [[nodiscard]] std::span<const TriangleBlock> blocks() const { return blocks_; }
@@ -59,23 +65,14 @@ public:
         return wide_.memory_bytes() + blocks_.size() * sizeof(TriangleBlock);
     }
 
-    /// A leaf holds at most this many blocks (the SAH decides, counting whole blocks).
-    /// Measured on the shared meshes: two or four blocks save 10% memory but cost up to
-    /// 15% on incoherent rays, so one block it is.
-    static constexpr uint32_t kMaxLeafBlocks = 1;
-
 private:
-    /// The leaf reference handed to the traversal: first block << 2 | (block count - 1).
-    static uint32_t encode_leaf(uint32_t first_block, uint32_t block_count) {
-        return first_block << 2 | (block_count - 1);
-    }
-
     WideBvh wide_;
     std::vector<TriangleBlock> blocks_;
 };
 
 namespace detail {
 
+#if defined(__SSE2__)
 /// `x`, hidden from the optimiser so that a product is rounded on its own, never fused.
 inline __m128 opaque_float(__m128 x) {
     __asm__("" : "+x"(x));
@@ -91,6 +88,14 @@ struct BlockRay {
         : ray(ray_), w(ray.direction), ox(_mm_set1_ps(ray.origin[w.kx])), oy(_mm_set1_ps(ray.origin[w.ky])),
           oz(_mm_set1_ps(ray.origin[w.kz])), sx(_mm_set1_ps(w.sx)), sy(_mm_set1_ps(w.sy)), sz(_mm_set1_ps(w.sz)) {}
 };
+#else
+/// The watertight test's per-ray constants.
+struct BlockRay {
+    Ray ray;
+    WatertightRay w;
+    explicit BlockRay(const Ray& ray_) : ray(ray_), w(ray.direction) {}
+};
+#endif
 
 /// intersect_triangle_watertight for four triangles at once, the same arithmetic in the
 /// same order; returns the lanes that hit and writes their t and barycentrics.
@@ -165,39 +170,33 @@ bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept) const {
     constexpr bool kFiltered = !std::is_same_v<std::decay_t<Filter>, AcceptAllHits>;
     const detail::BlockRay block_ray(ray);
     auto intersect_leaf = [&](uint32_t leaf, Ray& r) {
-        bool found = false;
-        const TriangleBlock* const first = &blocks_[leaf >> 2];
-        const uint32_t block_count = kMaxLeafBlocks == 1 ? 1 : (leaf & 3) + 1;
-        for (const TriangleBlock* block = first; block != first + block_count; ++block) {
-            float t[4], u[4], v[4];
-            uint32_t mask = detail::intersect_block(*block, block_ray, r.tmin, r.tmax, t, u, v);
-            // Take the nearest lane that the filter accepts (any accepted lane for AnyHit).
-            while (mask) {
-                auto best = static_cast<uint32_t>(std::countr_zero(mask));
-                if constexpr (!AnyHit)
-                    for (uint32_t m = mask & (mask - 1); m; m &= m - 1) {
-                        const auto i = static_cast<uint32_t>(std::countr_zero(m));
-                        if (t[i] < t[best]) best = i;
-                    }
-                if constexpr (kFiltered) {
-                    if (!accept(block->triangle[best], u[best], v[best])) {
-                        mask &= ~(1u << best);
-                        continue;
-                    }
+        const TriangleBlock& block = blocks_[leaf];
+        float t[4], u[4], v[4];
+        uint32_t mask = detail::intersect_block(block, block_ray, r.tmin, r.tmax, t, u, v);
+        // Take the nearest lane that the filter accepts (any accepted lane for AnyHit).
+        while (mask) {
+            auto best = static_cast<uint32_t>(std::countr_zero(mask));
+            if constexpr (!AnyHit)
+                for (uint32_t m = mask & (mask - 1); m; m &= m - 1) {
+                    const auto i = static_cast<uint32_t>(std::countr_zero(m));
+                    if (t[i] < t[best]) best = i;
                 }
-                r.tmax = t[best];
-                hit.t = t[best];
-                hit.primitive = block->triangle[best];
-                hit.u = u[best];
-                hit.v = v[best];
-                if constexpr (AnyHit) return true;
-                found = true;
-                break;
+            if constexpr (kFiltered) {
+                if (!accept(block.triangle[best], u[best], v[best])) {
+                    mask &= ~(1u << best);
+                    continue;
+                }
             }
+            r.tmax = t[best];
+            hit.t = t[best];
+            hit.primitive = block.triangle[best];
+            hit.u = u[best];
+            hit.v = v[best];
+            return true;
         }
-        return found;
+        return false;
     };
-    auto prefetch_leaf = [this](uint32_t leaf) { prefetch_lines<sizeof(TriangleBlock)>(&blocks_[leaf >> 2]); };
+    auto prefetch_leaf = [this](uint32_t leaf) { prefetch_lines<sizeof(TriangleBlock)>(&blocks_[leaf]); };
     return wide_.traverse<AnyHit>(ray, intersect_leaf, prefetch_leaf);
 }
 

@@ -179,9 +179,10 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
         uint32_t ref;
         float t_enter;
     };
-    // The builder bounds the binary depth (sah_builder.cpp), and each wide level leaves at
-    // most seven entries behind.
+    // Each wide level leaves at most seven entries behind, and a wide tree is no deeper
+    // than the binary one it collapses.
     constexpr int kStackSize = 640;
+    static_assert(kStackSize >= 7 * kMaxBinaryBvhDepth + 1);
     Entry stack[kStackSize];
     int top = 0;
     stack[top++] = {0, ray.tmin};

@@ -26,6 +26,8 @@ public:
     [[nodiscard]] bool occluded(const Ray& ray) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
     [[nodiscard]] std::size_t primitive_count() const override { return 2u * (nx_ - 1) * (nz_ - 1); }
+    /// Two per cell, as primitive_count().
+    [[nodiscard]] std::size_t triangle_count() const override { return primitive_count(); }
     [[nodiscard]] std::size_t memory_bytes() const override;
     [[nodiscard]] std::string_view type_name() const override { return "heightfield"; }
 

@@ -72,6 +72,8 @@ public:
     virtual void prepare_sampling() {}
 
     [[nodiscard]] virtual std::size_t primitive_count() const { return 1; }
+    /// Triangles the shape stores (meshes, heightfields); 0 for analytic shapes.
+    [[nodiscard]] virtual std::size_t triangle_count() const { return 0; }
     /// Bytes of geometry and acceleration data this shape owns.
     [[nodiscard]] virtual std::size_t memory_bytes() const = 0;
     [[nodiscard]] virtual std::string_view type_name() const = 0;

@@ -58,7 +58,7 @@ public:
     [[nodiscard]] std::size_t memory_bytes() const override;
     [[nodiscard]] std::string_view type_name() const override { return "mesh"; }
 
-    [[nodiscard]] std::size_t triangle_count() const { return data_.indices.size() / 3; }
+    [[nodiscard]] std::size_t triangle_count() const override { return data_.indices.size() / 3; }
     [[nodiscard]] const MeshData& data() const { return data_; }
     [[nodiscard]] const std::string& name() const { return name_; }
     /// The bottom-level structure (empty before prepare()).

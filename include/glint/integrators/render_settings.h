@@ -3,7 +3,9 @@
 /// seed, threads. One plain description, filled by a scene file and overridden by the
 /// command line; the film and the integrator are made from it.
 
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace glint {
@@ -23,6 +25,14 @@ enum class PixelFilter {
 
 /// How next-event estimation and BSDF sampling are weighted against each other (Veach 1997).
 enum class MisHeuristic { Balance, Power };
+
+/// N for `spp` samples per pixel taken as N×N stratified samples; none unless `spp` is a
+/// positive square (scene files and the command line both ask for N²).
+[[nodiscard]] inline std::optional<uint32_t> samples_per_axis(uint32_t spp) {
+    const auto n = static_cast<uint32_t>(std::lround(std::sqrt(double(spp))));
+    if (spp == 0 || n * n != spp) return std::nullopt;
+    return n;
+}
 
 struct RenderSettings {
     uint32_t width = 512;

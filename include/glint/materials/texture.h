@@ -23,6 +23,9 @@ public:
     /// Coverage in [0, 1] (alpha masks); 1 where the texture has no alpha.
     [[nodiscard]] virtual float alpha(const Vec2& /*uv*/) const { return 1.0f; }
     [[nodiscard]] virtual std::string_view type_name() const = 0;
+    /// True for a view of another texture the scene holds (the same image at transformed
+    /// coordinates): Scene::texture_count() counts what a scene declares, not its views.
+    [[nodiscard]] virtual bool is_view() const { return false; }
 };
 
 /// An image looked up with bilinear filtering. v = 0 is the top row of the image

@@ -14,6 +14,8 @@ public:
     [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const override { return base_->evaluate(map(uv), p); }
     [[nodiscard]] float alpha(const Vec2& uv) const override { return base_->alpha(map(uv)); }
     [[nodiscard]] std::string_view type_name() const override { return base_->type_name(); }
+    /// A view of the texture it maps, not a texture of its own (not counted by `glint info`).
+    [[nodiscard]] bool is_view() const override { return true; }
 
 private:
     [[nodiscard]] Vec2 map(const Vec2& uv) const { return {uv.x * scale_.x + offset_.x, uv.y * scale_.y + offset_.y}; }

@@ -36,8 +36,6 @@ public:
     [[nodiscard]] static Transform scale(const Vec3& s);
     /// Rotation by `degrees` about `axis` (right-handed, counter-clockwise looking down the axis).
     [[nodiscard]] static Transform rotate(float degrees, const Vec3& axis);
-    /// World-from-camera frame whose -z looks from `eye` at `target` (OpenGL/glTF convention).
-    [[nodiscard]] static Transform look_at(const Vec3& eye, const Vec3& target, const Vec3& up);
 
     /// this ∘ other: apply `other` first, then this.
     [[nodiscard]] Transform operator*(const Transform& other) const;

@@ -20,11 +20,9 @@ public:
     /// `view_height`: height of the visible region in world units.
     [[nodiscard]] static Camera orthographic(const Vec3& eye, const Vec3& target, const Vec3& up, float view_height);
 
-    /// Aspect ratio width/height, set from the image size before rendering.
-    void set_aspect(float aspect) { aspect_ = aspect; }
-
     /// Ray through the film position (x, y) in pixels, (0, 0) = top-left corner of the
-    /// image, (width, height) = bottom-right. Directions are unit length.
+    /// image, (width, height) = bottom-right; the aspect ratio is width/height. Directions
+    /// are unit length.
     [[nodiscard]] Ray generate_ray(float x, float y, int width, int height) const;
 
     [[nodiscard]] Projection projection() const { return projection_; }
@@ -42,7 +40,6 @@ private:
     Vec3 eye_, forward_, right_, up_;
     float vertical_fov_ = 52.0f;  // degrees
     float view_height_ = 2.0f;
-    float aspect_ = 1.0f;
 };
 
 }  // namespace glint

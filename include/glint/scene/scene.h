@@ -78,7 +78,8 @@ public:
 
     /// The scene owns its textures; materials point at them.
     const Texture* add_texture(std::unique_ptr<Texture> texture);
-    [[nodiscard]] std::size_t texture_count() const { return textures_.size(); }
+    /// Textures the scene declares; views of them (Texture::is_view) are not counted.
+    [[nodiscard]] std::size_t texture_count() const;
 
     /// A point-like light (point, spot, directional).
     void add_light(std::unique_ptr<Light> light);
