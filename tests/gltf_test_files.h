@@ -12,13 +12,17 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace glint_test {
 
 /// A fresh empty directory under the system temp dir, unique per test.
 inline std::filesystem::path temp_dir() {
     const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    // The process id keeps two runs of the suite at once (two checkouts, a CI job and a
+    // developer) out of each other's files.
     const auto dir = std::filesystem::temp_directory_path() /
-                     ("glint_" + std::string(info->test_suite_name()) + "_" + info->name());
+                     ("glint_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
