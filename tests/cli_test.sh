@@ -88,5 +88,67 @@ echo "$out" | grep -q "triangles: *12000 unique, 12000 instanced" || fail "info 
 # pool.toml declares three [[textures]], two of them with uv_scale (a view, not a texture).
 echo "$out" | grep -q "textures: *3$" || fail "info miscounts declared textures: $out"
 
+# 7. Every numeric option has its scene-file range and says so in words, before loading;
+# exit 1, no file. (issue: "--spp -4" printed a 300-digit range, "--seed -3" passed.)
+check_refused() {  # expected-words option...
+  local words=$1; shift
+  if "$glint" render -o refused.png -q "$@" 2>err.txt; then fail "$* accepted"; return; fi
+  [ -e refused.png ] && fail "$* left a file"
+  grep -q -- "$words" err.txt || fail "$*: message lacks '$words': $(cat err.txt)"
+}
+check_refused "--spp: expected a square number 1, 4, 9, ... up to 4096" --spp -4
+check_refused "got 8" --spp 8
+check_refused "--width: expected an integer from 1 to 16384; got 100000" --width 100000
+check_refused "--height: expected an integer from 1 to 16384; got 0" --height 0
+check_refused "--seed: expected a non-negative integer; got -3" --seed -3
+check_refused "--depth: expected an integer from 0 to 64; got 5000" --depth 5000
+check_refused "--light-samples: expected an integer from 1 to 1024" --light-samples 0
+check_refused "--filter-radius: expected a radius in pixels above 0 and at most 16" --filter-radius 0
+check_refused "--threads: expected 0 (all cores) or a thread count up to 1024" --threads -1
+if "$glint" render -o refused.png --spp abc 2>/dev/null; then fail "--spp abc accepted"; else
+  [ $? -eq 1 ] || fail "a malformed number does not exit with 1"; fi
+
+# 8. The output location is checked before the scene is loaded and rendered.
+mkdir -p folder.png
+if "$glint" render -o folder.png -q 2>err.txt; then fail "a folder as output accepted"; fi
+grep -q "folder.png: is a folder" err.txt || fail "folder output: $(cat err.txt)"
+if "$glint" render -o no/such/dir/x.png -q 2>err.txt; then fail "a missing folder accepted"; fi
+grep -q "the folder no/such/dir does not exist" err.txt || fail "missing folder: $(cat err.txt)"
+grep -q "partial" err.txt && fail "the message names a temporary file: $(cat err.txt)"
+
+# 9. More threads than the machine runs: our note, not the thread library's.
+"$glint" render -o threads.png --width 16 --height 8 --threads 1000 >out.txt 2>err.txt || fail "--threads 1000 failed"
+grep -q "TBB" err.txt && fail "a raw TBB warning: $(cat err.txt)"
+
+# 10. The deepest accepted recursion cannot overflow a stack: two facing mirrors send every
+# ray back and forth until --depth 64 stops it.
+cat > mirrors.toml <<'TOML'
+[camera]
+position = [0, 0, 0.5]
+look_at = [0, 0, -1]
+fov = 30
+[[materials]]
+name = "mirror"
+diffuse = 0
+reflectivity = 0.99
+[[lights]]
+type = "point"
+position = [0, 0.5, 0]
+[[objects]]
+type = "quad"
+corner = [-5, -5, -1]
+edge_u = [10, 0, 0]
+edge_v = [0, 10, 0]
+material = "mirror"
+[[objects]]
+type = "quad"
+corner = [-5, -5, 1]
+edge_u = [0, 10, 0]
+edge_v = [10, 0, 0]
+material = "mirror"
+TOML
+"$glint" render mirrors.toml -o mirrors.png --width 32 --height 32 --spp 4 --depth 64 -q ||
+  fail "--depth 64 between two mirrors failed"
+
 echo "$(( failures == 0 ? 1 : 0 )) passed, $failures failed"
 [ "$failures" -eq 0 ]

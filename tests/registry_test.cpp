@@ -114,13 +114,21 @@ TEST(Registry, MaterialTypeDefaultsToStandardAndUnknownOnesListTheTable) {
                  {"materials[0].type", "\"standard\"", "did you mean 'standard'"});
 }
 
+/// `"name"`, as choice lists quote it.
+std::string quoted(std::string_view name) {
+    std::string q = "\"";
+    q += name;
+    q += '"';
+    return q;
+}
+
 TEST(Registry, UnknownTypesNameEveryTypeOfTheTable) {
     const std::string message = error_of(std::string(kMaterial) + "[[objects]]\ntype = \"cylinder\"\nmaterial = \"m\"\n");
     for (const ShapeType& type : shape_types())
-        EXPECT_NE(message.find("\"" + std::string(type.name) + "\""), std::string::npos) << message;
+        EXPECT_NE(message.find(quoted(type.name)), std::string::npos) << message;
     const std::string light = error_of("[[lights]]\ntype = \"area\"\n");
     for (const LightType& type : light_types())
-        EXPECT_NE(light.find("\"" + std::string(type.name) + "\""), std::string::npos) << light;
+        EXPECT_NE(light.find(quoted(type.name)), std::string::npos) << light;
 }
 
 }  // namespace

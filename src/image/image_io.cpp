@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -104,11 +105,25 @@ bool is_supported_output(const std::filesystem::path& path) {
     return std::find(kOutputExtensions.begin(), kOutputExtensions.end(), ext) != kOutputExtensions.end();
 }
 
-void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options) {
-    const std::string ext = lower_case_extension(path);
+void check_output_path(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw ImageError(path.string() + ": is a folder; expected the name of an image file to write");
     if (!is_supported_output(path))
-        throw ImageError(path.string() + ": unknown image extension '" + ext +
+        throw ImageError(path.string() + ": unknown image extension '" + lower_case_extension(path) +
                          "' (expected .exr, .hdr, .pfm, .png, .jpg or .tif)");
+    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(dir, ec))
+        throw ImageError(path.string() + ": the folder " + dir.string() + " does not exist");
+    // The image is written beside its final name and renamed: the folder must be writable.
+    if (::access(dir.c_str(), W_OK | X_OK) != 0)
+        throw ImageError(path.string() + ": cannot write into the folder " + dir.string() + " (" +
+                         std::error_code(errno, std::generic_category()).message() + ")");
+}
+
+void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options) {
+    check_output_path(path);
+    const std::string ext = lower_case_extension(path);
     if (image.empty()) throw ImageError(path.string() + ": nothing to write (empty image)");
 
     const bool keep_linear = is_float_format(ext);
@@ -154,8 +169,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
+        const std::string reason = ec.message();
         std::filesystem::remove(tmp, ec);
-        throw ImageError(path.string() + ": cannot move the finished image into place: " + ec.message());
+        throw ImageError(path.string() + ": cannot move the finished image into place: " + reason);
     }
 }
 

@@ -4,9 +4,11 @@
 #include "glint/scene/render_scene.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
@@ -18,6 +20,8 @@ namespace {
 constexpr uint32_t kTileSize = 16;
 
 }  // namespace
+
+uint32_t max_render_threads() { return static_cast<uint32_t>(tbb::info::default_concurrency()); }
 
 RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                                const ProgressCallback& progress) const {
@@ -59,7 +63,7 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
     if (settings.threads == 0) {
         render_tiles();
     } else {
-        tbb::task_arena arena(int(settings.threads));
+        tbb::task_arena arena(int(std::min(settings.threads, max_render_threads())));
         arena.execute(render_tiles);
     }
     RenderStats stats;

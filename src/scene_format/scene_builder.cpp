@@ -30,25 +30,25 @@ uint32_t count(const ParamTable& t, std::string_view key, int64_t fallback, int6
 }
 
 void read_render(const ParamTable& t, RenderSettings& s) {
-    s.width = count(t, "width", s.width, 1, 16384);
-    s.height = count(t, "height", s.height, 1, 16384);
+    s.width = count(t, "width", s.width, 1, SettingLimits::kMaxImageSide);
+    s.height = count(t, "height", s.height, 1, SettingLimits::kMaxImageSide);
     // Samples per pixel, as on the command line: N² for N×N stratified samples.
-    const std::optional<uint32_t> n = samples_per_axis(count(t, "spp", 1, 1, 4096));
+    const std::optional<uint32_t> n = samples_per_axis(count(t, "spp", 1, 1, SettingLimits::kMaxSpp));
     if (!n) t.fail("spp", "a square number of samples per pixel (1, 4, 9, 16, ...): Glint takes N×N stratified samples");
     s.samples_per_axis = *n;
-    s.max_depth = count(t, "max_depth", s.max_depth, 0, 64);
+    s.max_depth = count(t, "max_depth", s.max_depth, 0, SettingLimits::kMaxDepth);
     const int64_t seed = t.integer("seed", 0);
     if (seed < 0) t.fail("seed", "a non-negative integer");
     s.seed = static_cast<uint64_t>(seed);
     s.filter = *filter_from_name(t.choice("filter", filter_names(), "box"));
     if (t.find("filter_radius")) {
         s.filter_radius = t.number("filter_radius", 0.0f);
-        if (!(s.filter_radius > 0.0f && s.filter_radius <= 16.0f))
+        if (!(s.filter_radius > 0.0f && s.filter_radius <= SettingLimits::kMaxFilterRadius))
             t.fail("filter_radius", "a filter radius in pixels, above 0 and at most 16");
     }
     const std::vector<std::string_view> integrators = integrator_names();
     s.integrator = t.choice("integrator", integrators, s.integrator);
-    s.light_samples = count(t, "light_samples", s.light_samples, 1, 1024);
+    s.light_samples = count(t, "light_samples", s.light_samples, 1, SettingLimits::kMaxLightSamples);
     s.mis = t.choice("mis", kMisHeuristics, "power") == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
     t.reject_unknown_keys();
 }

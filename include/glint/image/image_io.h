@@ -46,4 +46,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
 /// True if write_image knows the extension of `path`.
 [[nodiscard]] bool is_supported_output(const std::filesystem::path& path);
 
+/// Throw ImageError, saying what is wrong, unless write_image could put an image at `path`:
+/// a known extension, not a folder, in an existing folder this process may write to.
+/// Programs call it before a long render so that a bad name fails at once.
+void check_output_path(const std::filesystem::path& path);
+
 }  // namespace glint

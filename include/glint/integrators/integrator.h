@@ -28,6 +28,9 @@ struct TraceContext {
     uint64_t rays = 0;
 };
 
+/// The threads this machine runs at once; more would not render faster.
+[[nodiscard]] uint32_t max_render_threads();
+
 class Integrator {
 public:
     /// Called from worker threads as tiles finish: (finished tiles, total tiles).
@@ -37,7 +40,8 @@ public:
 
     /// Add settings.samples_per_axis² samples per pixel of the prepared scene to `film`, in
     /// parallel 16×16 tiles, each weighted by settings.filter. The result does not depend on
-    /// the thread count: every sample is a function of (seed, pixel, sample index).
+    /// the thread count: every sample is a function of (seed, pixel, sample index). A
+    /// thread count above max_render_threads() runs that many threads.
     RenderStats render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                        const ProgressCallback& progress = {}) const;
 

@@ -34,6 +34,20 @@ enum class MisHeuristic { Balance, Power };
     return n;
 }
 
+/// The accepted range of each numeric setting: one set of limits for scene files and the
+/// command line.
+struct SettingLimits {
+    /// Image side in pixels (a 16384² film with its output copy takes about 8 GB).
+    static constexpr uint32_t kMaxImageSide = 16384;
+    static constexpr uint32_t kMaxSpp = 4096;
+    /// Whitted recursion is this deep at most: bounded so no accepted value overflows a
+    /// worker thread's stack.
+    static constexpr uint32_t kMaxDepth = 64;
+    static constexpr uint32_t kMaxLightSamples = 1024;
+    static constexpr float kMaxFilterRadius = 16.0f;
+    static constexpr uint32_t kMaxThreads = 1024;
+};
+
 struct RenderSettings {
     uint32_t width = 512;
     uint32_t height = 512;
