@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace glint {
 
@@ -58,8 +59,11 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
             break;
         }
         const SurfaceInteraction si = scene.interaction(r, hit);
-        const ShadingPoint sp = shading_point(scene, si, ray, media);
-        const Material& m = *sp.material;
+        // Only hits on per-vertex materials pay for a blended copy.
+        std::optional<Material> blended;
+        if (si.blends_materials) blended = blended_material(scene, si);
+        const Material& m = blended ? *blended : scene.material(si.materials[0]);
+        const ShadingPoint sp = shading_point(si, m, ray, media);
 
         const Color le = scene.emitted(hit.object, m, si, sp.wo);
         if (!le.is_black()) {

@@ -20,13 +20,14 @@ Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceConte
 
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                       const Vec3& ng, TraceContext& context) const {
+    const Vec3 origin = offset_ray_origin(si.p, ng);
     Color sum;
     auto add = [&](const LightSample& ls, float weight) {
         if (!(ls.pdf > 0.0f) || ls.radiance.is_black()) return;
         const Color f = bsdf.eval(ls.direction);
         if (f.is_black()) return;  // behind the shading or the true surface
         ++context.rays;
-        if (scene.occluded(shadow_ray(si.p, ng, ls))) return;
+        if (scene.occluded(shadow_ray(origin, ls))) return;
         sum += f * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
     };
     for (const Light* light : scene.all_lights()) {
@@ -56,12 +57,18 @@ Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_
     if (!scene.intersect(r, hit)) return scene.background().evaluate(ray.direction);
 
     const SurfaceInteraction si = scene.interaction(r, hit);
-    const ShadingPoint sp = shading_point(scene, si, ray, media);
-    const Material& m = *sp.material;
+    // Only hits on per-vertex materials build a (blended) Material.
+    if (si.blends_materials) return shade(scene, ray, hit.object, si, blended_material(scene, si), depth, media, context);
+    return shade(scene, ray, hit.object, si, scene.material(si.materials[0]), depth, media, context);
+}
+
+Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
+                               const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const {
+    const ShadingPoint sp = shading_point(si, m, ray, media);
     const Color texture = diffuse_texture(m, si);
     const Bsdf bsdf(m, texture, sp.n, sp.ng, sp.wo, sp.media);
 
-    Color radiance = scene.emitted(hit.object, m, si, sp.wo);
+    Color radiance = scene.emitted(object, m, si, sp.wo);
     const float t = std::clamp(m.transparency, 0.0f, 1.0f);
     if (t < 1.0f) {
         // Whitted's ambient term: ka·La, textured like the diffuse term; no BSDF lobe.

@@ -49,7 +49,7 @@ Vec3 transpose_times(const Matrix4& m, const Vec3& v) {
 
 AreaLight::AreaLight(std::shared_ptr<Shape> shape, const std::optional<Transform>& world_from_object,
                      const Color& radiance, const Texture* texture, bool two_sided)
-    : shape_(std::move(shape)), radiance_(radiance), texture_(texture), two_sided_(two_sided) {
+    : Light(false), shape_(std::move(shape)), radiance_(radiance), texture_(texture), two_sided_(two_sided) {
     shape_->prepare_sampling();
     if (!(shape_->area() > 0.0f))
         throw std::invalid_argument(std::string(shape_->type_name()) + " has no area that can emit light");

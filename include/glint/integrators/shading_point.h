@@ -11,16 +11,11 @@
 #include "glint/math/offset_ray.h"
 #include "glint/math/ray.h"
 
-#include <optional>
-
 namespace glint {
 
 class RenderScene;
 
 struct ShadingPoint {
-    /// The material at the hit; a blended copy only for per-vertex materials.
-    const Material* material = nullptr;
-    std::optional<Material> blended;
     /// Unit shading and geometric normals on the side the ray came from.
     Vec3 n, ng;
     /// Unit direction back along the ray.
@@ -32,28 +27,62 @@ struct ShadingPoint {
     uint32_t medium = 0;
 };
 
-/// Resolve the material, normals and interface of a hit. Entering or leaving a dielectric is
-/// decided by the stack of media: a material the ray is not inside is being entered,
-/// whatever the winding of the surface (open or inward-wound glass is glass, not a mirror);
-/// only a stack that lost track of an entry leaves the decision to the winding.
-[[nodiscard]] ShadingPoint shading_point(const RenderScene& scene, const SurfaceInteraction& si, const Ray& ray,
-                                         const IorStack& media);
+/// The per-vertex materials of a hit (si.blends_materials) blended by their weights. Kept
+/// apart from shading_point: the common hit on one material uses the scene's own
+/// `Material` and never constructs one (GCC 12 zero-fills an empty std::optional<Material>,
+/// a cost every hit would pay).
+[[nodiscard]] Material blended_material(const RenderScene& scene, const SurfaceInteraction& si);
+
+/// Resolve the normals and interface of a hit on material `m` (the scene's material of
+/// si.materials[0], or the blended one). Entering or leaving a dielectric is decided by the
+/// stack of media: a material the ray is not inside is being entered, whatever the winding
+/// of the surface (open or inward-wound glass is glass, not a mirror); only a stack that
+/// lost track of an entry leaves the decision to the winding. Inline: every integrator
+/// calls it at every hit.
+[[nodiscard]] inline ShadingPoint shading_point(const SurfaceInteraction& si, const Material& m, const Ray& ray,
+                                                const IorStack& media) {
+    ShadingPoint sp;
+    sp.medium = si.materials[0];
+    sp.wo = -normalize(ray.direction);
+    // Shade on the side the ray arrived from (surfaces are two-sided).
+    sp.n = si.front_face ? si.shading_normal : -si.shading_normal;
+    sp.ng = si.front_face ? si.geometric_normal : -si.geometric_normal;
+    if (m.is_dielectric()) {
+        const bool inside = media.contains(sp.medium);
+        sp.entering = inside ? false : (media.lost_entries() ? si.front_face : true);
+        // Indices on both sides of the interface, from the stack of media (handout §5.4.1).
+        sp.media.eta_from = sp.entering ? media.current() : m.ior;
+        sp.media.eta_to = sp.entering ? m.ior : media.outside_of(sp.medium);
+    }
+    return sp;
+}
 
 /// Texture colour multiplying kd at the hit (white without a texture, or for a fully
-/// transparent material, whose diffuse and ambient terms have weight 0).
-[[nodiscard]] Color diffuse_texture(const Material& m, const SurfaceInteraction& si);
+/// transparent material, whose diffuse and ambient terms have weight 0). Inline: it runs
+/// at every hit.
+[[nodiscard]] inline Color diffuse_texture(const Material& m, const SurfaceInteraction& si) {
+    // A fully transparent material has no diffuse lobe for the texture to tint: skip the lookup.
+    if (!m.texture || m.transparency >= 1.0f) return Color(1.0f);
+    return m.texture->evaluate(si.uv, si.p);
+}
 
-/// The shadow ray from a surface point (geometric normal `ng` on the side the light is) to a
-/// light sample: unbounded for directional lights, ending at the light's point for point
-/// lights, and ending just off the surface of an area light so that it cannot block itself.
-[[nodiscard]] inline Ray shadow_ray(const Vec3& p, const Vec3& ng, const LightSample& ls) {
-    const Vec3 origin = offset_ray_origin(p, ng);
+/// The shadow ray from `origin`, a surface point already moved off its surface to the side
+/// the light is on (offset_ray_origin), to a light sample: unbounded for directional lights,
+/// ending at the light's point for point lights, and ending just off the surface of an area
+/// light so that it cannot block itself. A point lit by several lights offsets once.
+[[nodiscard]] inline Ray shadow_ray(const Vec3& origin, const LightSample& ls) {
     if (ls.is_delta) return Ray(origin, ls.direction, 0.0f, ls.distance);
     const Vec3 target = offset_ray_origin(ls.point, ls.normal);
     const Vec3 d = target - origin;
     const float dist = length(d);
     // Stop a hair short of the offset end point: the light's own surface lies beyond it.
     return Ray(origin, d / dist, 0.0f, dist * (1.0f - 1e-4f));
+}
+
+/// The shadow ray from surface point `p` (geometric normal `ng` on the side the light is) to
+/// a light sample.
+[[nodiscard]] inline Ray shadow_ray(const Vec3& p, const Vec3& ng, const LightSample& ls) {
+    return shadow_ray(offset_ray_origin(p, ng), ls);
 }
 
 }  // namespace glint

@@ -31,6 +31,9 @@ public:
                               TraceContext& context) const;
 
 private:
+    /// Radiance leaving the hit `si` on `object`, of material `m`, back along `ray`.
+    [[nodiscard]] Color shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
+                              const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const;
     /// Σ over lights of the BSDF's smooth lobes times the visible light (f·L·cosθ/pdf).
     [[nodiscard]] Color direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                      const Vec3& ng, TraceContext& context) const;

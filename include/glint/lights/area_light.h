@@ -38,7 +38,6 @@ public:
 
     [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
     [[nodiscard]] float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override;
-    [[nodiscard]] bool is_delta() const override { return false; }
     [[nodiscard]] std::string_view type_name() const override { return "area"; }
 
     /// Radiance leaving the surface point p with unit outward normal `n` (world) and texture

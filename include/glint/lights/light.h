@@ -48,6 +48,8 @@ enum class Falloff {
 
 class Light {
 public:
+    /// `delta`: a point-like light (see is_delta).
+    explicit Light(bool delta = true) : delta_(delta) {}
     virtual ~Light() = default;
     /// Sample the light from `point` with u in [0,1)² (ignored by delta lights).
     [[nodiscard]] virtual LightSample sample(const Vec3& point, Vec2 u) const = 0;
@@ -57,8 +59,13 @@ public:
         (void)ref, (void)p, (void)n;
         return 0.0f;
     }
-    [[nodiscard]] virtual bool is_delta() const { return true; }
+    /// True for point-like lights, which one sample covers. A flag, not a virtual call: the
+    /// Whitted integrator asks for every light at every hit.
+    [[nodiscard]] bool is_delta() const { return delta_; }
     [[nodiscard]] virtual std::string_view type_name() const = 0;
+
+private:
+    bool delta_;
 };
 
 /// The colour of `key` (white when absent) for a light's intensity or radiance; throws
