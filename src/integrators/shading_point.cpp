@@ -1,6 +1,6 @@
 #include "glint/integrators/shading_point.h"
 
-#include "glint/scene/scene.h"
+#include "glint/scene/render_scene.h"
 
 namespace glint {
 
