@@ -2,6 +2,7 @@
 // renders it and writes the image; everything else lives in the library.
 
 #include "info_command.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 #include "scene_source.h"
 #include "timing.h"
@@ -12,6 +13,7 @@
 #include "glint/integrators/render_settings.h"
 #include "glint/scene/render_scene.h"
 #include "glint/scene_file.h"
+#include "glint/util/file_extension.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -128,12 +130,22 @@ int run_render(const RenderOptions& opt) {
         warn(fmt::format("--threads {}: this machine runs {} threads at once; rendering with {}", s.threads,
                          glint::max_render_threads(), glint::max_render_threads()));
     glint::app::ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
-    const glint::RenderStats stats =
-        integrator->render(scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); });
+    const glint::app::InterruptGuard interrupt(output);
+    const glint::RenderStats stats = integrator->render(
+        scene, s, film, [&](uint32_t done, uint32_t total) { bar.update(done, total); }, &interrupt.stop());
     bar.finish();
 
     glint::WriteOptions write_options;
     write_options.exposure = opt.exposure;
+    if (!stats.complete()) {
+        // Interrupted: keep what is rendered. EXR says per pixel how many samples it has
+        // (0 where no tile reached); other formats show unrendered pixels black.
+        write_options.fourth_channel = "samples";
+        glint::write_image(output, film.to_image(true), write_options);
+        fmt::print(stderr, "interrupted: wrote the {} of {} tiles rendered to {}{}\n", stats.tiles_done, stats.tiles,
+                   output, glint::lower_case_extension(output) == ".exr" ? " (channel 'samples': samples per pixel)" : "");
+        return 128 + interrupt.signal();
+    }
     glint::write_image(output, film.to_image(), write_options);
 
     if (opt.quiet) return 0;

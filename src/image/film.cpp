@@ -7,15 +7,17 @@ Color Film::at(uint32_t x, uint32_t y) const {
     return p.weight_sum != 0.0f ? p.weighted_sum / p.weight_sum : Color();
 }
 
-Image Film::to_image() const {
-    Image img(int(width_), int(height_), 3);
+Image Film::to_image(bool sample_counts) const {
+    const int channels = sample_counts ? 4 : 3;
+    Image img(int(width_), int(height_), channels);
     for (uint32_t y = 0; y < height_; ++y)
         for (uint32_t x = 0; x < width_; ++x) {
             const Color c = at(x, y);
-            const std::size_t i = std::size_t(y) * width_ + x;
-            img.pixels[3 * i + 0] = c.r;
-            img.pixels[3 * i + 1] = c.g;
-            img.pixels[3 * i + 2] = c.b;
+            float* out = &img.pixels[(std::size_t(y) * width_ + x) * channels];
+            out[0] = c.r;
+            out[1] = c.g;
+            out[2] = c.b;
+            if (sample_counts) out[3] = float(samples_at(x, y));
         }
     return img;
 }

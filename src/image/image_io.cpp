@@ -105,6 +105,17 @@ bool is_supported_output(const std::filesystem::path& path) {
     return std::find(kOutputExtensions.begin(), kOutputExtensions.end(), ext) != kOutputExtensions.end();
 }
 
+std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
+    // A unique temporary name beside the target keeps the rename atomic and on one file system.
+    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::string name = ".";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + string
+    name += path.stem().string();
+    name += ".partial-";
+    name += std::to_string(::getpid());
+    name += lower_case_extension(path);
+    return dir / name;
+}
+
 void check_output_path(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
@@ -127,7 +138,8 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
     if (image.empty()) throw ImageError(path.string() + ": nothing to write (empty image)");
 
     const bool keep_linear = is_float_format(ext);
-    const int channels = std::min(image.channels, 3);
+    const bool fourth = ext == ".exr" && !options.fourth_channel.empty() && image.channels >= 4;
+    const int channels = fourth ? 4 : std::min(image.channels, 3);
     std::vector<float> data(std::size_t(image.width) * image.height * channels);
     const float gain = std::exp2(options.exposure);
     for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
@@ -136,14 +148,7 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
             data[p * channels + c] = keep_linear ? v : linear_to_srgb(v * gain);
         }
 
-    // A unique temporary name beside the target keeps the rename atomic and on one file system.
-    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    std::string tmp_name = ".";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + string
-    tmp_name += path.stem().string();
-    tmp_name += ".partial-";
-    tmp_name += std::to_string(::getpid());
-    tmp_name += ext;
-    const std::filesystem::path tmp = dir / tmp_name;
+    const std::filesystem::path tmp = temporary_path_for(path);
     std::string error;
     if (ext == ".pfm") {
         std::vector<float> rgb(std::size_t(image.width) * image.height * 3);
@@ -155,6 +160,10 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
         if (!output) throw ImageError(path.string() + ": cannot create a writer: " + OIIO::geterror());
         OIIO::ImageSpec spec(image.width, image.height, channels,
                              keep_linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+        if (fourth) {
+            spec.channelnames = {"R", "G", "B", options.fourth_channel};
+            spec.alpha_channel = -1;  // a count, not coverage
+        }
         spec.attribute("oiio:ColorSpace", keep_linear ? "Linear" : "sRGB");
         spec.attribute("Software", "Glint");
         if (!(output->open(tmp.string(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, data.data()) &&

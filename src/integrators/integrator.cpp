@@ -24,7 +24,7 @@ constexpr uint32_t kTileSize = 16;
 uint32_t max_render_threads() { return static_cast<uint32_t>(tbb::info::default_concurrency()); }
 
 RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
-                               const ProgressCallback& progress) const {
+                               const ProgressCallback& progress, const std::atomic<bool>* stop) const {
     if (settings.samples_per_axis == 0) throw std::invalid_argument("samples per axis must be at least 1");
     const Filter filter(settings.filter, settings.filter_radius);
     const auto start = std::chrono::steady_clock::now();
@@ -37,6 +37,7 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
     std::atomic<uint32_t> finished{0};
 
     auto render_tile = [&](uint32_t tile) {
+        if (stop && stop->load(std::memory_order_relaxed)) return;
         const uint32_t x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
         const uint32_t x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
         Sampler sampler(settings.seed, n);
@@ -68,6 +69,8 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
     }
     RenderStats stats;
     stats.rays = rays.load();
+    stats.tiles_done = finished.load();
+    stats.tiles = tile_count;
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }

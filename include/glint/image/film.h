@@ -8,6 +8,7 @@
 #include "glint/image/image.h"
 #include "glint/math/color.h"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -24,20 +25,29 @@ public:
     /// ever written by one thread at a time (the integrator's tiles do not overlap).
     void add_sample(uint32_t x, uint32_t y, const Color& radiance, float weight) {
         Pixel& p = pixels_[std::size_t(y) * width_ + x];
-        p.weighted_sum += radiance * weight;
+        // One rounding, always: an explicit fused multiply-add. Left to the compiler, sum +
+        // radiance·weight is fused in some inlined copies of the pixel loop and not in others,
+        // and the thread count decides which copy runs, so images would depend on it.
+        p.weighted_sum = Color(std::fma(radiance.r, weight, p.weighted_sum.r), std::fma(radiance.g, weight, p.weighted_sum.g),
+                               std::fma(radiance.b, weight, p.weighted_sum.b));
         p.weight_sum += weight;
+        ++p.samples;
     }
     /// The pixel's value: the weighted mean of its samples (black before any sample).
     [[nodiscard]] Color at(uint32_t x, uint32_t y) const;
     /// Sum of the weights that reached pixel (x, y).
     [[nodiscard]] float weight_at(uint32_t x, uint32_t y) const { return pixels_[std::size_t(y) * width_ + x].weight_sum; }
-    /// Three-channel float image of the pixel values (linear).
-    [[nodiscard]] Image to_image() const;
+    /// Number of samples that reached pixel (x, y) (0 where an interrupted render never got).
+    [[nodiscard]] uint32_t samples_at(uint32_t x, uint32_t y) const { return pixels_[std::size_t(y) * width_ + x].samples; }
+    /// Three-channel float image of the pixel values (linear); with `sample_counts`, a
+    /// fourth channel holds each pixel's sample count (for partial renders).
+    [[nodiscard]] Image to_image(bool sample_counts = false) const;
 
 private:
     struct Pixel {
         Color weighted_sum;
         float weight_sum = 0.0f;
+        uint32_t samples = 0;
     };
     uint32_t width_, height_;
     std::vector<Pixel> pixels_;

@@ -7,6 +7,7 @@
 #include "glint/math/ray.h"
 #include "glint/sampling/sampler.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -20,6 +21,10 @@ struct RenderStats {
     /// Every ray cast into the scene: camera, reflection, refraction and shadow rays.
     uint64_t rays = 0;
     double seconds = 0.0;
+    /// Tiles rendered, of how many; fewer when a stop was asked for.
+    uint32_t tiles_done = 0;
+    uint32_t tiles = 0;
+    [[nodiscard]] bool complete() const { return tiles_done == tiles; }
 };
 
 /// Per-pixel-sample context handed to Li(): the sample generator and a ray counter.
@@ -41,9 +46,11 @@ public:
     /// Add settings.samples_per_axis² samples per pixel of the prepared scene to `film`, in
     /// parallel 16×16 tiles, each weighted by settings.filter. The result does not depend on
     /// the thread count: every sample is a function of (seed, pixel, sample index). A
-    /// thread count above max_render_threads() runs that many threads.
+    /// thread count above max_render_threads() runs that many threads. Once `stop` is
+    /// set (from a signal handler, say), tiles not yet begun are skipped and the tiles in
+    /// flight finish: every pixel of the film then has all its samples or none.
     RenderStats render(const RenderScene& scene, const RenderSettings& settings, Film& film,
-                       const ProgressCallback& progress = {}) const;
+                       const ProgressCallback& progress = {}, const std::atomic<bool>* stop = nullptr) const;
 
     /// Radiance arriving at the camera along `ray`.
     [[nodiscard]] virtual Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const = 0;
