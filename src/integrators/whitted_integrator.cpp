@@ -24,11 +24,10 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
     Color sum;
     auto add = [&](const LightSample& ls, float weight) {
         if (!(ls.pdf > 0.0f) || ls.radiance.is_black()) return;
-        const Color f = bsdf.eval(ls.direction);
-        if (f.is_black()) return;  // behind the shading or the true surface
+        if (!bsdf.may_reflect(ls.direction)) return;  // behind the surface, or a glass with no smooth lobe
         ++context.rays;
         if (scene.occluded(shadow_ray(origin, ls))) return;
-        sum += f * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
+        sum += bsdf.eval(ls.direction) * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
     };
     for (const Light* light : scene.all_lights()) {
         if (light->is_delta()) {

@@ -23,33 +23,6 @@ Vec3 to_world(const Vec3& local, const Vec3& n) {
 
 }  // namespace
 
-Bsdf::Bsdf(const Material& m, const Color& texture, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media)
-    : n_(n), ng_(ng), wo_(wo) {
-    const float t = std::clamp(m.transparency, 0.0f, 1.0f);
-    diffuse_ = m.diffuse * texture * (1.0f - t);
-    highlight_ = m.specular * (1.0f - t);
-    shininess_ = m.shininess;
-
-    const Vec3 d = -wo;
-    specular_.reflected = reflect(d, n);
-    Color mirror = m.reflectivity;
-    if (m.fresnel_mirror) {
-        // Schlick with a coloured F0 (metals): F = F0 + (1 − F0)(1 − cos θ)^5.
-        const float c = 1.0f - std::clamp(dot(n, wo), 0.0f, 1.0f);
-        const float c5 = c * c * c * c * c;
-        mirror = m.reflectivity + (Color(1.0f) - m.reflectivity) * c5;
-    }
-    specular_.reflection = mirror * (1.0f - t);
-    if (t > 0.0f) {
-        specular_.refracted = refract(d, n, media.eta_from, media.eta_to);
-        eta_ = media.eta_to / media.eta_from;
-        // Under total internal reflection all of the dielectric's weight is reflected.
-        const float fresnel = specular_.refracted ? fresnel_schlick(d, n, media.eta_from, media.eta_to) : 1.0f;
-        specular_.reflection += Color(t * fresnel);
-        specular_.transmission = t * (1.0f - fresnel);
-    }
-}
-
 Bsdf::LobeChoice Bsdf::lobe_choice() const {
     // In proportion to an estimate of each lobe's albedo; any positive choice is unbiased.
     // The Blinn-Phong lobe's albedo falls roughly as 8/(s+2) for large exponents. Computed

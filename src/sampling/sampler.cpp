@@ -88,25 +88,6 @@ Vec2 correlated_multi_jitter(uint32_t s, uint32_t count, uint32_t p) {
 
 Sampler::Sampler(uint64_t seed, uint32_t samples_per_axis) : seed_(seed), n_(samples_per_axis < 1 ? 1 : samples_per_axis) {}
 
-void Sampler::start_pixel_sample(uint64_t pixel, uint32_t index) {
-    pixel_ = pixel;
-    index_ = index;
-    dimension_ = 0;
-    // The pixel's PCG32 stream drew two numbers per sample in order: jump to this sample's
-    // pair unless it is the next one anyway.
-    if (pixel != stream_pixel_ || index != stream_next_index_) {
-        stream_ = pcg32(seed_, pixel);
-        stream_.advance(2ull * index);
-        stream_pixel_ = pixel;
-    }
-    stream_next_index_ = index + 1;
-    const float ux = float(stream_() >> 8) * 0x1p-24f;
-    const float uy = float(stream_() >> 8) * 0x1p-24f;
-    pixel_2d_ = {(float(index % n_) + ux) / float(n_), (float(index / n_) + uy) / float(n_)};
-}
-
-Vec2 Sampler::pixel_2d() const { return pixel_2d_; }
-
 uint64_t Sampler::dimension_hash(uint32_t dimension) const {
     return mix64(mix64(mix64(seed_ ^ 0x9e3779b97f4a7c15ull) ^ pixel_) ^ dimension);
 }

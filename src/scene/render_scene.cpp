@@ -64,7 +64,8 @@ void RenderScene::build_area_lights() {
     for (const auto& l : area_lights_) all_lights_.push_back(l.get());
 }
 
-Color RenderScene::emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const {
+Color RenderScene::emitted_slow(uint32_t object, const Material& m, const SurfaceInteraction& si,
+                                const Vec3& wo) const {
     if (const AreaLight* light = area_light_of(object)) return light->emitted(si.p, si.geometric_normal, si.uv, wo);
     Color le = m.emission;
     if (m.emission_texture) le *= m.emission_texture->evaluate(si.uv, si.p);

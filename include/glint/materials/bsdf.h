@@ -15,6 +15,7 @@
 /// integrators. `eval` and `pdf` see only the smooth lobes; `sample` picks any lobe with a
 /// probability proportional to its weight (Veach 1997, §9.2: one-sample mixture sampling).
 
+#include "glint/integrators/optics.h"
 #include "glint/materials/material.h"
 #include "glint/math/color.h"
 #include "glint/math/constants.h"
@@ -71,7 +72,40 @@ class Bsdf {
 public:
     /// `texture` multiplies kd (white for none). `n` is the unit shading normal and `ng` the
     /// unit geometric normal, both on the viewer's side; `wo` the unit direction to the viewer.
-    Bsdf(const Material& m, const Color& texture, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media);
+    /// Inline: built at every hit.
+    Bsdf(const Material& m, const Color& texture, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media)
+        : n_(n), ng_(ng), wo_(wo) {
+        const float t = std::clamp(m.transparency, 0.0f, 1.0f);
+        diffuse_ = m.diffuse * texture * (1.0f - t);
+        highlight_ = m.specular * (1.0f - t);
+        shininess_ = m.shininess;
+
+        const Vec3 d = -wo;
+        specular_.reflected = reflect(d, n);
+        Color mirror = m.reflectivity;
+        if (m.fresnel_mirror) {
+            // Schlick with a coloured F0 (metals): F = F0 + (1 − F0)(1 − cos θ)^5.
+            const float c = 1.0f - std::clamp(dot(n, wo), 0.0f, 1.0f);
+            const float c5 = c * c * c * c * c;
+            mirror = m.reflectivity + (Color(1.0f) - m.reflectivity) * c5;
+        }
+        specular_.reflection = mirror * (1.0f - t);
+        if (t > 0.0f) {
+            specular_.refracted = refract(d, n, media.eta_from, media.eta_to);
+            eta_ = media.eta_to / media.eta_from;
+            // Under total internal reflection all of the dielectric's weight is reflected.
+            const float fresnel = specular_.refracted ? fresnel_schlick(d, n, media.eta_from, media.eta_to) : 1.0f;
+            specular_.reflection += Color(t * fresnel);
+            specular_.transmission = t * (1.0f - fresnel);
+        }
+    }
+
+    /// False where eval(wi) is certainly zero: wi under the shading or true surface, or no
+    /// smooth lobe at all. Cheaper than eval: a caller can skip a shadow ray on it and
+    /// evaluate the lobes (a pow for the highlight) only for unoccluded light.
+    [[nodiscard]] bool may_reflect(const Vec3& wi) const {
+        return dot(n_, wi) > 0.0f && dot(ng_, wi) > 0.0f && !(diffuse_.is_black() && highlight_.is_black());
+    }
 
     /// Sum of the smooth lobes' f(wo, wi); zero for wi under the shading or true surface.
     /// Inline: the Whitted integrator calls it for every light at every hit.

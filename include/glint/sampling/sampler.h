@@ -25,10 +25,25 @@ public:
     Sampler(uint64_t seed, uint32_t samples_per_axis);
 
     /// Begin sample `index` (0 … n²−1) of the pixel with linear index `pixel`.
-    void start_pixel_sample(uint64_t pixel, uint32_t index);
+    void start_pixel_sample(uint64_t pixel, uint32_t index) {
+        pixel_ = pixel;
+        index_ = index;
+        dimension_ = 0;
+        // The pixel's PCG32 stream drew two numbers per sample in order: jump to this sample's
+        // pair unless it is the next one anyway.
+        if (pixel != stream_pixel_ || index != stream_next_index_) {
+            stream_ = pcg32(seed_, pixel);
+            stream_.advance(2ull * index);
+            stream_pixel_ = pixel;
+        }
+        stream_next_index_ = index + 1;
+        const float ux = float(stream_() >> 8) * 0x1p-24f;
+        const float uy = float(stream_() >> 8) * 0x1p-24f;
+        pixel_2d_ = {(float(index % n_) + ux) / float(n_), (float(index / n_) + uy) / float(n_)};
+    }
 
     /// Position inside the pixel in [0,1)²: the current sample's jittered n×n cell.
-    [[nodiscard]] Vec2 pixel_2d() const;
+    [[nodiscard]] Vec2 pixel_2d() const { return pixel_2d_; }
     /// Next dimension: one of the n² strata of [0,1), permuted per (pixel, dimension).
     [[nodiscard]] float next_1d();
     /// Next dimension: one of the n×n cells of [0,1)², permuted per (pixel, dimension).

@@ -61,7 +61,11 @@ public:
     [[nodiscard]] SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
     /// Radiance that the surface of the object hit emits towards `wo` (unit, away from the
     /// surface): its area light's, or the material's emission where it is no light.
-    [[nodiscard]] Color emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const;
+    /// Inline for the common case, a hit on something that emits nothing.
+    [[nodiscard]] Color emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const {
+        if (objects_[object].area_light < 0 && m.emission.is_black()) return Color();
+        return emitted_slow(object, m, si, wo);
+    }
 
     /// World bounds of all objects.
     [[nodiscard]] Bounds3 bounds() const { return top_level_.bounds(); }
@@ -82,6 +86,8 @@ private:
     };
 
     void build_area_lights();
+    [[nodiscard]] Color emitted_slow(uint32_t object, const Material& m, const SurfaceInteraction& si,
+                                     const Vec3& wo) const;
     bool intersect_object(uint32_t object, Ray& ray, Hit& hit) const;
     bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode) const;
 
