@@ -187,5 +187,32 @@ sleep 1.5; kill -INT $pid; kill -INT $pid; wait $pid; status=$?
 [ $status -eq 130 ] || fail "second SIGINT: exit status $status, expected 130"
 ls -a | grep -q "partial-" && fail "a temporary image was left: $(ls -a)"
 
+# 12. Exact resume: an interrupted render continues from its checkpoint and ends in the
+# image an uninterrupted render gives, bit for bit; a killed render resumes from its last
+# periodic checkpoint; another render's checkpoint is refused, saying what differs.
+res=("$scenes/whitted1980.toml" --width 640 --height 480 --spp 16 --threads 1 -q)
+"$glint" render "${res[@]}" -o whole.pfm || fail "uninterrupted render failed"
+"$glint" render "${res[@]}" -o resumed.pfm & pid=$!
+sleep 1; kill -INT $pid; wait $pid
+[ -s resumed.pfm.checkpoint ] || fail "an interrupted render left no checkpoint"
+"$glint" render "${res[@]}" -o resumed.pfm --resume 2>err.txt || fail "--resume failed: $(cat err.txt)"
+cmp -s whole.pfm resumed.pfm || fail "the resumed image differs from the uninterrupted one"
+[ -e resumed.pfm.checkpoint ] && fail "a finished render left its checkpoint"
+"$glint" render "${res[@]}" -o killed.pfm --checkpoint-every 0.2 & pid=$!
+sleep 1.5; kill -KILL $pid; wait $pid 2>/dev/null
+[ -s killed.pfm.checkpoint ] || fail "--checkpoint-every left no checkpoint behind a killed render"
+"$glint" render "${res[@]}" -o killed.pfm --resume 2>err.txt || fail "resume after kill failed: $(cat err.txt)"
+cmp -s whole.pfm killed.pfm || fail "the image resumed after a kill differs from the uninterrupted one"
+"$glint" render "${res[@]}" -o other.pfm & pid=$!
+sleep 1; kill -INT $pid; wait $pid
+if "$glint" render "$scenes/whitted1980.toml" --width 640 --height 480 --spp 4 -q -o other.pfm --resume 2>err.txt; then
+  fail "a checkpoint of another render was resumed"; fi
+grep -q "spp: the checkpoint has 16, this render 4" err.txt || fail "mismatch message: $(cat err.txt)"
+printf 'not a checkpoint' > other.pfm.checkpoint
+if "$glint" render "${res[@]}" -o other.pfm --resume 2>err.txt; then fail "a corrupt checkpoint was resumed"; fi
+grep -q "not a Glint checkpoint" err.txt || fail "corrupt checkpoint message: $(cat err.txt)"
+if "$glint" render "${res[@]}" -o none.pfm --resume 2>err.txt; then fail "--resume without a checkpoint passed"; fi
+grep -q "no checkpoint to resume" err.txt || fail "missing checkpoint message: $(cat err.txt)"
+
 echo "$(( failures == 0 ? 1 : 0 )) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -3,7 +3,7 @@
 namespace glint {
 
 Color Film::at(uint32_t x, uint32_t y) const {
-    const Pixel& p = pixels_[std::size_t(y) * width_ + x];
+    const FilmPixel& p = pixels_[std::size_t(y) * width_ + x];
     return p.weight_sum != 0.0f ? p.weighted_sum / p.weight_sum : Color();
 }
 

@@ -15,31 +15,25 @@
 
 namespace glint {
 
-namespace {
-
-constexpr uint32_t kTileSize = 16;
-
-}  // namespace
-
 uint32_t max_render_threads() { return static_cast<uint32_t>(tbb::info::default_concurrency()); }
 
 RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
-                               const ProgressCallback& progress, const std::atomic<bool>* stop) const {
+                               const ProgressCallback& progress, const std::atomic<bool>* stop, TileGrid* tiles) const {
     if (settings.samples_per_axis == 0) throw std::invalid_argument("samples per axis must be at least 1");
     const Filter filter(settings.filter, settings.filter_radius);
     const auto start = std::chrono::steady_clock::now();
     const uint32_t width = film.width(), height = film.height();
-    const uint32_t tiles_x = (width + kTileSize - 1) / kTileSize;
-    const uint32_t tiles_y = (height + kTileSize - 1) / kTileSize;
-    const uint32_t tile_count = tiles_x * tiles_y;
+    TileGrid own_tiles(width, height);
+    TileGrid& grid = tiles ? *tiles : own_tiles;
+    if (grid.width() != width || grid.height() != height) throw std::invalid_argument("tile grid and film differ in size");
+    const uint32_t tile_count = grid.count();
     const uint32_t n = settings.samples_per_axis;
     std::atomic<uint64_t> rays{0};
-    std::atomic<uint32_t> finished{0};
+    std::atomic<uint32_t> finished{grid.done_count()};
 
     auto render_tile = [&](uint32_t tile) {
-        if (stop && stop->load(std::memory_order_relaxed)) return;
-        const uint32_t x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-        const uint32_t x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
+        if (grid.done(tile) || (stop && stop->load(std::memory_order_relaxed))) return;
+        const auto [x0, y0, x1, y1] = grid.bounds(tile);
         Sampler sampler(settings.seed, n);
         TraceContext context{sampler};
         for (uint32_t y = y0; y < y1; ++y)
@@ -53,6 +47,7 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
                     film.add_sample(x, y, Li(scene, ray, context), fs.weight);
                 }
         rays += context.rays;
+        grid.mark_done(tile);
         const uint32_t done = ++finished;
         if (progress) progress(done, tile_count);
     };

@@ -10,9 +10,17 @@
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace glint {
+
+/// What a film keeps per pixel.
+struct FilmPixel {
+    Color weighted_sum;
+    float weight_sum = 0.0f;
+    uint32_t samples = 0;
+};
 
 class Film {
 public:
@@ -24,7 +32,7 @@ public:
     /// Add radiance `radiance` with filter weight `weight` to pixel (x, y). A pixel is only
     /// ever written by one thread at a time (the integrator's tiles do not overlap).
     void add_sample(uint32_t x, uint32_t y, const Color& radiance, float weight) {
-        Pixel& p = pixels_[std::size_t(y) * width_ + x];
+        FilmPixel& p = pixels_[std::size_t(y) * width_ + x];
         // One rounding, always: an explicit fused multiply-add. Left to the compiler, sum +
         // radiance·weight is fused in some inlined copies of the pixel loop and not in others,
         // and the thread count decides which copy runs, so images would depend on it.
@@ -43,14 +51,13 @@ public:
     /// fourth channel holds each pixel's sample count (for partial renders).
     [[nodiscard]] Image to_image(bool sample_counts = false) const;
 
+    /// The accumulators, row by row from the top (checkpoints save and restore them).
+    [[nodiscard]] std::span<const FilmPixel> pixels() const { return pixels_; }
+    [[nodiscard]] std::span<FilmPixel> pixels() { return pixels_; }
+
 private:
-    struct Pixel {
-        Color weighted_sum;
-        float weight_sum = 0.0f;
-        uint32_t samples = 0;
-    };
     uint32_t width_, height_;
-    std::vector<Pixel> pixels_;
+    std::vector<FilmPixel> pixels_;
 };
 
 }  // namespace glint

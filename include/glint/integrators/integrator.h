@@ -3,6 +3,7 @@
 
 #include "glint/image/film.h"
 #include "glint/integrators/render_settings.h"
+#include "glint/integrators/tile_grid.h"
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/sampling/sampler.h"
@@ -21,7 +22,7 @@ struct RenderStats {
     /// Every ray cast into the scene: camera, reflection, refraction and shadow rays.
     uint64_t rays = 0;
     double seconds = 0.0;
-    /// Tiles rendered, of how many; fewer when a stop was asked for.
+    /// Tiles finished (before and during this call), of how many; fewer when a stop was asked for.
     uint32_t tiles_done = 0;
     uint32_t tiles = 0;
     [[nodiscard]] bool complete() const { return tiles_done == tiles; }
@@ -48,9 +49,12 @@ public:
     /// the thread count: every sample is a function of (seed, pixel, sample index). A
     /// thread count above max_render_threads() runs that many threads. Once `stop` is
     /// set (from a signal handler, say), tiles not yet begun are skipped and the tiles in
-    /// flight finish: every pixel of the film then has all its samples or none.
+    /// flight finish: every pixel of the film then has all its samples or none. With
+    /// `tiles`, tiles it marks done are skipped (a resumed render) and each finished tile is
+    /// marked, so that what is finished can be saved (integrators/checkpoint.h).
     RenderStats render(const RenderScene& scene, const RenderSettings& settings, Film& film,
-                       const ProgressCallback& progress = {}, const std::atomic<bool>* stop = nullptr) const;
+                       const ProgressCallback& progress = {}, const std::atomic<bool>* stop = nullptr,
+                       TileGrid* tiles = nullptr) const;
 
     /// Radiance arriving at the camera along `ray`.
     [[nodiscard]] virtual Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const = 0;

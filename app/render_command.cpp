@@ -1,0 +1,189 @@
+#include "render_command.h"
+
+#include "interrupt.h"
+#include "progress_bar.h"
+#include "timing.h"
+
+#include "glint/image/filter.h"
+#include "glint/image/image_io.h"
+#include "glint/integrators/checkpoint.h"
+#include "glint/integrators/integrator_registry.h"
+#include "glint/integrators/render_settings.h"
+#include "glint/scene/render_scene.h"
+#include "glint/util/file_extension.h"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace glint::app {
+
+namespace {
+
+
+/// `value` of option `name` if it lies in [lo, hi]; otherwise throws "name: expected ...; got value".
+uint32_t in_range(std::string_view name, int64_t value, int64_t lo, int64_t hi, std::string_view expected = {}) {
+    if (value < lo || value > hi)
+        throw std::invalid_argument(fmt::format("{}: expected {}; got {}", name,
+                                                expected.empty() ? fmt::format("an integer from {} to {}", lo, hi)
+                                                                 : std::string(expected),
+                                                value));
+    return static_cast<uint32_t>(value);
+}
+
+/// The command line's overrides, checked before anything is loaded.
+void apply_overrides(const RenderOptions& opt, glint::RenderSettings& s) {
+    using Limits = glint::SettingLimits;
+    if (opt.width) s.width = in_range("--width", *opt.width, 1, Limits::kMaxImageSide);
+    if (opt.height) s.height = in_range("--height", *opt.height, 1, Limits::kMaxImageSide);
+    if (opt.spp) {
+        const std::string expected =
+            fmt::format("a square number 1, 4, 9, ... up to {} (N×N stratified samples)", Limits::kMaxSpp);
+        const std::optional<uint32_t> n = glint::samples_per_axis(in_range("--spp", *opt.spp, 1, Limits::kMaxSpp, expected));
+        if (!n) throw std::invalid_argument(fmt::format("--spp: expected {}; got {}", expected, *opt.spp));
+        s.samples_per_axis = *n;
+    }
+    if (opt.depth) s.max_depth = in_range("--depth", *opt.depth, 0, Limits::kMaxDepth);
+    if (opt.threads)
+        s.threads = in_range("--threads", *opt.threads, 0, Limits::kMaxThreads,
+                             fmt::format("0 (all cores) or a thread count up to {}", Limits::kMaxThreads));
+    if (opt.seed) {
+        if (*opt.seed < 0) throw std::invalid_argument(fmt::format("--seed: expected a non-negative integer; got {}", *opt.seed));
+        s.seed = static_cast<uint64_t>(*opt.seed);
+    }
+    if (opt.filter) {
+        s.filter = *glint::filter_from_name(*opt.filter);  // CLI11 checked the name
+        s.filter_radius = 0.0f;                             // a filter named here takes its own default radius
+    }
+    if (opt.filter_radius) {
+        if (!(*opt.filter_radius > 0.0 && *opt.filter_radius <= Limits::kMaxFilterRadius))
+            throw std::invalid_argument(fmt::format("--filter-radius: expected a radius in pixels above 0 and at most {}; got {}",
+                                                    Limits::kMaxFilterRadius, *opt.filter_radius));
+        s.filter_radius = static_cast<float>(*opt.filter_radius);
+    }
+    if (opt.integrator) s.integrator = *opt.integrator;
+    if (opt.light_samples) s.light_samples = in_range("--light-samples", *opt.light_samples, 1, Limits::kMaxLightSamples);
+    if (opt.mis) s.mis = *opt.mis == "balance" ? glint::MisHeuristic::Balance : glint::MisHeuristic::Power;
+    if (opt.checkpoint_every && !(*opt.checkpoint_every > 0.0))
+        throw std::invalid_argument(
+            fmt::format("--checkpoint-every: expected a positive number of seconds; got {}", *opt.checkpoint_every));
+}
+
+/// Refuse an image whose film and output copies would not fit in the machine's memory,
+/// before allocating any of it.
+void check_memory(const glint::RenderSettings& s) {
+    const double pixels = double(s.width) * double(s.height);
+    // The film (Σw·L and Σw), the image it becomes, and the writer's encoded copy.
+    const double needed = pixels * (sizeof(glint::Color) + sizeof(float) + 2 * 3 * sizeof(float));
+    const double available = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
+    if (available > 0.0 && needed > available)
+        throw std::invalid_argument(fmt::format("a {}×{} image needs about {:.1f} GB for its film and output, but this "
+                                                "machine has {:.1f} GB of memory",
+                                                s.width, s.height, needed / 1e9, available / 1e9));
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& opt) {
+    // Every mistake on the command line is reported before the scene is loaded.
+    glint::RenderSettings checked;
+    apply_overrides(opt, checked);
+    std::string output = opt.output;
+    if (output.empty())
+        output = opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
+    glint::check_output_path(output);
+
+    const auto load_start = Clock::now();
+    SceneSource source = load_scene(opt.scene_path, opt.scene);
+    glint::LoadedScene& loaded = source.loaded;
+    auto warn = [&](const std::string& w) {
+        if (!opt.quiet) fmt::print(stderr, "warning: {}\n", w);
+    };
+    for (const std::string& w : loaded.warnings) warn(w);
+
+    glint::RenderSettings& s = loaded.settings;
+    apply_overrides(opt, s);
+    check_memory(s);
+    const double load_seconds = seconds_since(load_start);
+
+    const auto build_start = Clock::now();
+    const glint::RenderScene scene(std::move(loaded.scene));
+    const double build_seconds = seconds_since(build_start);
+
+    glint::Film film(s.width, s.height);
+    glint::TileGrid tiles(s.width, s.height);
+    const glint::RenderFingerprint fingerprint = glint::render_fingerprint(opt.scene_path, s);
+    const std::filesystem::path checkpoint = glint::checkpoint_path_for(output);
+    if (opt.resume) {
+        glint::read_checkpoint(checkpoint, fingerprint, film, tiles);
+        if (!opt.quiet)
+            fmt::print(stderr, "resuming {}: {} of {} tiles were rendered\n", checkpoint.string(), tiles.done_count(),
+                       tiles.count());
+    }
+    const std::unique_ptr<glint::Integrator> integrator = glint::make_integrator(s);
+    for (const std::string& w : integrator->warnings(scene)) warn(w);
+    if (s.threads > glint::max_render_threads())
+        warn(fmt::format("--threads {}: this machine runs {} threads at once; rendering with {}", s.threads,
+                         glint::max_render_threads(), glint::max_render_threads()));
+
+    // A periodic checkpoint is written by whichever worker finishes a tile once the period
+    // is over; the others carry on.
+    std::mutex checkpoint_mutex;
+    auto last_checkpoint = Clock::now();
+    bool checkpoint_failed = false;
+    auto save_checkpoint_if_due = [&] {
+        if (!opt.checkpoint_every) return;
+        const std::unique_lock lock(checkpoint_mutex, std::try_to_lock);
+        if (!lock || checkpoint_failed || seconds_since(last_checkpoint) < *opt.checkpoint_every) return;
+        try {
+            glint::write_checkpoint(checkpoint, fingerprint, film, tiles);
+        } catch (const glint::CheckpointError& e) {
+            checkpoint_failed = true;  // say it once; the render goes on
+            warn(e.what());
+        }
+        last_checkpoint = Clock::now();
+    };
+
+    ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
+    const InterruptGuard interrupt(output);
+    const glint::RenderStats stats = integrator->render(
+        scene, s, film,
+        [&](uint32_t done, uint32_t total) {
+            bar.update(done, total);
+            save_checkpoint_if_due();
+        },
+        &interrupt.stop(), &tiles);
+    bar.finish();
+
+    glint::WriteOptions write_options;
+    write_options.exposure = opt.exposure;
+    if (!stats.complete()) {
+        // Interrupted: keep what is rendered. EXR says per pixel how many samples it has
+        // (0 where no tile reached); other formats show unrendered pixels black. The
+        // checkpoint lets --resume finish the same image.
+        write_options.fourth_channel = "samples";
+        glint::write_image(output, film.to_image(true), write_options);
+        glint::write_checkpoint(checkpoint, fingerprint, film, tiles);
+        fmt::print(stderr,
+                   "interrupted: wrote the {} of {} tiles rendered to {}{}; checkpoint {} (continue with --resume)\n",
+                   stats.tiles_done, stats.tiles, output,
+                   glint::lower_case_extension(output) == ".exr" ? " (channel 'samples': samples per pixel)" : "",
+                   checkpoint.string());
+        return 128 + interrupt.signal();
+    }
+    glint::write_image(output, film.to_image(), write_options);
+    std::error_code ec;
+    std::filesystem::remove(checkpoint, ec);  // the image is whole: nothing to resume
+
+    if (opt.quiet) return 0;
+    const double mrays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds * 1e-6 : 0.0;
+    fmt::print("{}x{}, {} spp: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}\n",
+               s.width, s.height, s.samples_per_axis * s.samples_per_axis, load_seconds, build_seconds, stats.seconds,
+               double(stats.rays) * 1e-6, mrays_per_second, output);
+    return 0;
+}
+
+}  // namespace glint::app

@@ -1,0 +1,34 @@
+#pragma once
+// `glint render`: its options, checked against the limits scene files have, and the render
+// itself: load, prepare, render (interruptible, resumable), write.
+
+#include "scene_source.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace glint::app {
+
+struct RenderOptions {
+    std::string scene_path;
+    SceneOptions scene;
+    std::string output;
+    // Numbers are read signed and wide, then checked against the limits scene files have,
+    // so that "-4" or "100000" gets a message in words rather than a conversion error.
+    std::optional<int64_t> width, height, spp, depth, threads, seed, light_samples;
+    std::optional<std::string> filter, integrator, mis;
+    std::optional<double> filter_radius;
+    float exposure = 0.0f;
+    bool quiet = false;
+    /// Continue from the checkpoint beside the output (`<output>.checkpoint`).
+    bool resume = false;
+    /// Save a checkpoint this often while rendering (seconds; none when unset).
+    std::optional<double> checkpoint_every;
+};
+
+/// Run `glint render`; returns the exit status (0, or 128 + the signal that interrupted it).
+/// Throws on every error, with a message for the user.
+int run_render(const RenderOptions& options);
+
+}  // namespace glint::app

@@ -1,0 +1,205 @@
+#include "glint/integrators/checkpoint.h"
+
+#include "glint/image/filter.h"
+
+#include <fmt/format.h>
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string_view>
+
+#include <unistd.h>
+
+namespace glint {
+
+namespace {
+
+// Layout (native byte order: a checkpoint resumes on the machine kind that wrote it):
+//   "GLINTCKP", u32 version, u32 item count, items as (u32 length, bytes) name/value pairs,
+//   u32 width, u32 height, u32 tile count, one byte per tile (1 = finished), then the
+//   FilmPixel records of every finished tile in tile order, row by row within the tile.
+constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'C', 'K', 'P'};
+constexpr uint32_t kVersion = 1;
+
+/// FNV-1a, 64 bits: enough to tell an edited scene file from the one a checkpoint saw.
+uint64_t fnv1a(const std::string& bytes) {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+    return h;
+}
+
+class Writer {
+public:
+    void u32(uint32_t v) { raw(&v, sizeof v); }
+    void text(const std::string& s) {
+        u32(uint32_t(s.size()));
+        raw(s.data(), s.size());
+    }
+    void raw(const void* data, std::size_t size) {
+        const auto* p = static_cast<const char*>(data);
+        bytes.insert(bytes.end(), p, p + size);
+    }
+    std::string bytes;
+};
+
+class Reader {
+public:
+    Reader(const std::filesystem::path& path, std::string_view bytes) : path_(path), bytes_(bytes) {}
+    uint32_t u32() {
+        uint32_t v;
+        raw(&v, sizeof v);
+        return v;
+    }
+    std::string text() {
+        const uint32_t n = u32();
+        need(n);
+        std::string s(bytes_.substr(at_, n));
+        at_ += n;
+        return s;
+    }
+    void raw(void* out, std::size_t size) {
+        need(size);
+        std::memcpy(out, bytes_.data() + at_, size);
+        at_ += size;
+    }
+    [[nodiscard]] bool at_end() const { return at_ == bytes_.size(); }
+    [[noreturn]] void corrupt() const {
+        throw CheckpointError(path_.string() + ": not a Glint checkpoint, or cut short (delete it to start over)");
+    }
+
+private:
+    void need(std::size_t n) const {
+        if (bytes_.size() - at_ < n) corrupt();
+    }
+    std::filesystem::path path_;
+    std::string_view bytes_;
+    std::size_t at_ = 0;
+};
+
+std::string read_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw CheckpointError(path.string() + ": cannot be read");
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, const RenderSettings& s) {
+    RenderFingerprint f;
+    if (scene_file.empty()) {
+        f.emplace_back("scene", "the built-in scene");
+    } else {
+        f.emplace_back("scene", scene_file.filename().string());
+        f.emplace_back("scene content", fmt::format("{:016x}", fnv1a(read_file(scene_file))));
+    }
+    f.emplace_back("width", std::to_string(s.width));
+    f.emplace_back("height", std::to_string(s.height));
+    f.emplace_back("spp", std::to_string(s.samples_per_axis * s.samples_per_axis));
+    f.emplace_back("max_depth", std::to_string(s.max_depth));
+    f.emplace_back("seed", std::to_string(s.seed));
+    f.emplace_back("integrator", s.integrator);
+    f.emplace_back("filter", std::string(filter_name(s.filter)));
+    f.emplace_back("filter_radius", fmt::format("{}", s.filter_radius));
+    f.emplace_back("light_samples", std::to_string(s.light_samples));
+    f.emplace_back("mis", s.mis == MisHeuristic::Balance ? "balance" : "power");
+    return f;
+}
+
+std::filesystem::path checkpoint_path_for(const std::filesystem::path& output) {
+    std::filesystem::path p = output;
+    p += ".checkpoint";
+    return p;
+}
+
+void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint& fingerprint, const Film& film,
+                      const TileGrid& tiles) {
+    Writer w;
+    w.raw(kMagic, sizeof kMagic);
+    w.u32(kVersion);
+    w.u32(uint32_t(fingerprint.size()));
+    for (const auto& [name, value] : fingerprint) {
+        w.text(name);
+        w.text(value);
+    }
+    w.u32(film.width());
+    w.u32(film.height());
+    w.u32(tiles.count());
+    // Read each flag once: a tile finishing meanwhile is saved next time, never half.
+    std::string done(tiles.count(), '\0');
+    for (uint32_t t = 0; t < tiles.count(); ++t) done[t] = tiles.done(t) ? 1 : 0;
+    w.raw(done.data(), done.size());
+    const std::span<const FilmPixel> pixels = film.pixels();
+    for (uint32_t t = 0; t < tiles.count(); ++t) {
+        if (!done[t]) continue;
+        const auto [x0, y0, x1, y1] = tiles.bounds(t);
+        for (uint32_t y = y0; y < y1; ++y)
+            w.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
+    }
+    std::filesystem::path tmp = path;
+    tmp += ".partial-" + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        out.write(w.bytes.data(), std::streamsize(w.bytes.size()));
+        if (!out.flush()) {
+            std::error_code ec;
+            std::filesystem::remove(tmp, ec);
+            throw CheckpointError(path.string() + ": cannot write the checkpoint");
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        const std::string reason = ec.message();
+        std::filesystem::remove(tmp, ec);
+        throw CheckpointError(path.string() + ": cannot move the checkpoint into place: " + reason);
+    }
+}
+
+void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film,
+                     TileGrid& tiles) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw CheckpointError(path.string() + ": no checkpoint to resume (an interrupted render leaves one beside "
+                              "its image)");
+    const std::string bytes = read_file(path);
+    Reader r(path, bytes);
+    char magic[sizeof kMagic];
+    r.raw(magic, sizeof magic);
+    if (std::memcmp(magic, kMagic, sizeof kMagic) != 0 || r.u32() != kVersion) r.corrupt();
+    RenderFingerprint saved(r.u32());
+    if (saved.size() > 1024) r.corrupt();
+    for (auto& [name, value] : saved) {
+        name = r.text();
+        value = r.text();
+    }
+    if (saved != expected) {
+        std::string differences;
+        for (const auto& [name, value] : expected) {
+            std::string theirs = "nothing";
+            for (const auto& [saved_name, saved_value] : saved)
+                if (saved_name == name) theirs = saved_value;
+            if (theirs != value)
+                differences += fmt::format("{}{}: the checkpoint has {}, this render {}", differences.empty() ? "" : "; ",
+                                           name, theirs, value);
+        }
+        throw CheckpointError(path.string() + ": made by another render (" +
+                              (differences.empty() ? std::string("its description differs") : differences) +
+                              "); delete it or render with the settings it was made with");
+    }
+    if (r.u32() != film.width() || r.u32() != film.height() || r.u32() != tiles.count()) r.corrupt();
+    std::string done(tiles.count(), '\0');
+    r.raw(done.data(), done.size());
+    const std::span<FilmPixel> pixels = film.pixels();
+    for (uint32_t t = 0; t < tiles.count(); ++t) {
+        if (done[t] == 0) continue;
+        if (done[t] != 1) r.corrupt();
+        const auto [x0, y0, x1, y1] = tiles.bounds(t);
+        for (uint32_t y = y0; y < y1; ++y)
+            r.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
+        tiles.mark_done(t);
+    }
+    if (!r.at_end()) r.corrupt();
+}
+
+}  // namespace glint
