@@ -2,6 +2,7 @@
 
 #include "glint/math/color.h"
 #include "glint/util/file_extension.h"
+#include "glint/util/move_into_place.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -175,13 +176,8 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
         std::filesystem::remove(tmp, ec);
         throw ImageError(path.string() + ": cannot write image: " + error);
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        const std::string reason = ec.message();
-        std::filesystem::remove(tmp, ec);
+    if (const std::string reason = move_into_place(tmp, path); !reason.empty())
         throw ImageError(path.string() + ": cannot move the finished image into place: " + reason);
-    }
 }
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 #include "glint/integrators/checkpoint.h"
 
 #include "glint/image/filter.h"
+#include "glint/util/move_into_place.h"
 
 #include <fmt/format.h>
 
@@ -147,13 +148,8 @@ void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint
             throw CheckpointError(path.string() + ": cannot write the checkpoint");
         }
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        const std::string reason = ec.message();
-        std::filesystem::remove(tmp, ec);
+    if (const std::string reason = move_into_place(tmp, path); !reason.empty())
         throw CheckpointError(path.string() + ": cannot move the checkpoint into place: " + reason);
-    }
 }
 
 void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film,
