@@ -73,8 +73,9 @@ std::vector<unsigned char> read_uri(const std::filesystem::path& gltf, const std
         }
     }
     const std::filesystem::path file = gltf.parent_path() / decoded;
-    if (!std::filesystem::exists(file))
-        fail(gltf, std::string(what) + " " + std::to_string(index) + " '" + uri + "' is missing (expected " +
+    std::error_code ec;  // a folder "exists" too, and reading one throws a message that names no file
+    if (!std::filesystem::is_regular_file(file, ec))
+        fail(gltf, std::string(what) + " " + std::to_string(index) + " '" + uri + "' is missing (expected the file " +
                        file.string() + ")");
     return read_bytes(file);
 }
