@@ -73,8 +73,9 @@ std::vector<unsigned char> read_uri(const std::filesystem::path& gltf, const std
         }
     }
     const std::filesystem::path file = gltf.parent_path() / decoded;
-    if (!std::filesystem::exists(file))
-        fail(gltf, std::string(what) + " " + std::to_string(index) + " '" + uri + "' is missing (expected " +
+    std::error_code ec;  // a folder "exists" too, and reading one throws a message that names no file
+    if (!std::filesystem::is_regular_file(file, ec))
+        fail(gltf, std::string(what) + " " + std::to_string(index) + " '" + uri + "' is missing (expected the file " +
                        file.string() + ")");
     return read_bytes(file);
 }
@@ -113,22 +114,37 @@ Matrix4 trs_matrix(const Vec3& t, const float q[4], const Vec3& s) {
     return m;
 }
 
+bool fits_in(std::size_t offset, std::size_t length, std::size_t size) { return offset <= size && length <= size - offset; }
+
+bool elements_fit(std::size_t offset, std::size_t count, std::size_t stride, std::size_t element, std::size_t length) {
+    // offset + (count - 1)·stride + element <= length, without the wrap-around a hostile
+    // count or offset would get from writing it so (stride >= element >= 1).
+    return count == 0 || (fits_in(offset, element, length) && count - 1 <= (length - offset - element) / stride);
+}
+
 std::vector<float> read_floats(const Document& doc, std::size_t index, int components) {
     const auto& accessor = doc.json["accessors"].at(index);
     const std::size_t count = accessor.at("count").get<std::size_t>();
     const int type = accessor.at("componentType").get<int>();
     const std::size_t size = type == 5126 || type == 5125 ? 4 : type == 5122 || type == 5123 ? 2 : 1;
-    std::vector<float> out(count * std::size_t(components), 0.0f);
-    if (!accessor.contains("bufferView")) return out;  // all zeros, per spec (sparse not supported)
+    if (!accessor.contains("bufferView")) {  // all zeros, per spec (sparse not supported)
+        if (count > kMaxZeroAccessor)
+            fail(doc.path, "accessor " + std::to_string(index) + " has " + std::to_string(count) +
+                               " elements and no data (expected at most " + std::to_string(kMaxZeroAccessor) + ")");
+        return std::vector<float>(count * std::size_t(components), 0.0f);
+    }
     const auto& view = doc.json["bufferViews"].at(accessor["bufferView"].get<std::size_t>());
     const std::size_t buffer = view.at("buffer").get<std::size_t>();
     const std::size_t element = size * std::size_t(components);
     const std::size_t stride = view.value("byteStride", element);
-    const std::size_t begin = view.value("byteOffset", std::size_t(0)) + accessor.value("byteOffset", std::size_t(0));
-    if (count > 0 && (buffer >= doc.buffers.size() || begin + (count - 1) * stride + element > doc.buffers[buffer].size() ||
-                      begin + (count - 1) * stride + element > view.value("byteOffset", std::size_t(0)) + view.at("byteLength").get<std::size_t>()))
+    const std::size_t view_offset = view.value("byteOffset", std::size_t(0));
+    const std::size_t view_length = view.at("byteLength").get<std::size_t>();
+    const std::size_t offset = accessor.value("byteOffset", std::size_t(0));
+    if (buffer >= doc.buffers.size() || !fits_in(view_offset, view_length, doc.buffers[buffer].size()) ||
+        stride < element || !elements_fit(offset, count, stride, element, view_length))
         fail(doc.path, "accessor " + std::to_string(index) + " lies outside its buffer view");
-    const unsigned char* data = doc.buffers[buffer].data() + begin;
+    std::vector<float> out(count * std::size_t(components), 0.0f);
+    const unsigned char* data = doc.buffers[buffer].data() + view_offset + offset;
     for (std::size_t i = 0; i < count; ++i)
         for (int c = 0; c < components; ++c) {
             const unsigned char* p = data + i * stride + std::size_t(c) * size;
@@ -256,7 +272,7 @@ std::vector<unsigned char> image_bytes(const Document& doc, int index, std::stri
     const auto& view = doc.json["bufferViews"].at(view_index);
     const auto buffer = view.at("buffer").get<std::size_t>();
     const std::size_t offset = view.value("byteOffset", std::size_t(0)), length = view.at("byteLength").get<std::size_t>();
-    if (buffer >= doc.buffers.size() || offset + length > doc.buffers[buffer].size())
+    if (buffer >= doc.buffers.size() || !fits_in(offset, length, doc.buffers[buffer].size()))
         fail(doc.path, "image " + std::to_string(index) + ": bufferView " + std::to_string(view_index) +
                            " lies outside its buffer");
     name = "image" + std::to_string(index) + (mime == "image/jpeg" ? ".jpg" : ".png");

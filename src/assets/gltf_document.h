@@ -52,6 +52,18 @@ struct PlacedNode {
 /// the decoder the format. Throws SceneError when the image cannot be found.
 [[nodiscard]] std::vector<unsigned char> image_bytes(const Document& doc, int index, std::string& name);
 
+/// Whether bytes [offset, offset + length) lie inside `size` bytes (no wrap-around).
+[[nodiscard]] bool fits_in(std::size_t offset, std::size_t length, std::size_t size);
+
+/// Whether `count` elements of `element` bytes, `stride` apart (stride >= element >= 1),
+/// starting at `offset`, lie inside `length` bytes (no wrap-around for hostile counts).
+[[nodiscard]] bool elements_fit(std::size_t offset, std::size_t count, std::size_t stride, std::size_t element,
+                                std::size_t length);
+
+/// Most elements an accessor without a bufferView (all zeros) may have: its count is not
+/// bounded by any data in the file.
+inline constexpr std::size_t kMaxZeroAccessor = std::size_t(1) << 24;
+
 /// Accessor `index` as `components` floats per element (FLOAT, or normalized integer types
 /// mapped to [0, 1] / [-1, 1] as the spec says). Throws SceneError if it lies outside its buffer.
 [[nodiscard]] std::vector<float> read_floats(const Document& doc, std::size_t index, int components);

@@ -48,11 +48,14 @@ void check_accessor(const Document& doc, std::size_t index, const std::string& u
     const auto buffer = view.at("buffer").get<std::size_t>();
     const std::size_t view_offset = view.value("byteOffset", std::size_t(0));
     const std::size_t view_length = view.at("byteLength").get<std::size_t>();
-    if (buffer >= doc.buffers.size() || view_offset + view_length > doc.buffers[buffer].size())
+    if (!fits_in(view_offset, view_length, buffer < doc.buffers.size() ? doc.buffers[buffer].size() : 0))
         fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " lies outside its buffer");
     const std::size_t count = accessor.at("count").get<std::size_t>();
     const std::size_t stride = view.value("byteStride", element);
-    if (count > 0 && accessor.value("byteOffset", std::size_t(0)) + (count - 1) * stride + element > view_length)
+    if (stride < element)
+        fail(doc.path, where + ": byteStride " + std::to_string(stride) + " of bufferView " + std::to_string(view_index) +
+                           " is smaller than an element (" + std::to_string(element) + " bytes)");
+    if (!elements_fit(accessor.value("byteOffset", std::size_t(0)), count, stride, element, view_length))
         fail(doc.path, where + ": " + std::to_string(count) + " elements do not fit in bufferView " +
                            std::to_string(view_index) + " (" + std::to_string(view_length) + " bytes)");
 }

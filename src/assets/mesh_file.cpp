@@ -12,8 +12,10 @@
 #include <assimp/scene.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <set>
+#include <sstream>
 
 namespace glint {
 
@@ -233,10 +235,78 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, Con
     return file;
 }
 
+/// Bytes of one PLY scalar type, 0 if unknown.
+std::size_t ply_type_size(const std::string& type) {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+        return 4;
+    if (type == "double" || type == "float64") return 8;
+    return 0;
+}
+
+/// assimp 5.2.5 loops forever on a PLY header without `end_header`, and allocates for the
+/// element counts a header declares before it reads the data (a 200-byte ASCII file that
+/// declares 10⁹ vertices took 6 GB in 10 s). So a PLY file's header must end, and the data
+/// after it must be long enough for the declared counts: at least one byte per binary
+/// scalar or list length, two characters (a digit and a separator) per ASCII value.
+/// Anything this cannot judge (unknown types, malformed lines) is left to assimp.
+void check_ply_header(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    if (!in.read(magic, 4) || !(std::string_view(magic, 3) == "ply" || std::string_view(magic, 3) == "PLY") ||
+        !std::isspace(static_cast<unsigned char>(magic[3])))
+        return;  // not PLY: assimp decides by itself
+    in.seekg(0);
+    constexpr std::size_t kMaxHeader = 1 << 20;
+    bool ascii = false, ended = false;
+    double needed = 0.0;  // bytes of data the counts imply; double: counts may be absurd
+    double count = 0.0, per_element = 0.0;
+    std::string line;
+    for (std::size_t read = 0; read < kMaxHeader && std::getline(in, line); read += line.size() + 1) {
+        std::istringstream words(line);
+        std::string word, a, b;
+        words >> word;
+        if (word == "end_header") {
+            ended = true;
+            break;
+        }
+        if (word == "format") {
+            words >> a;
+            ascii = a == "ascii";
+        } else if (word == "element") {
+            needed += count * per_element;
+            unsigned long long n = 0;
+            words >> a >> n;
+            count = words ? double(n) : 0.0;
+            per_element = 0.0;
+        } else if (word == "property") {
+            words >> a;
+            const bool list = a == "list";
+            if (list) words >> a >> b;  // count type, item type
+            const std::size_t size = ply_type_size(a);
+            if (!words || size == 0 || (list && ply_type_size(b) == 0)) return;
+            per_element += ascii ? 2.0 : double(size);
+        }
+    }
+    if (!ended)
+        throw SceneError(path.string() + ": cannot read mesh file: the PLY header has no end_header line (expected one " +
+                         "within the first " + std::to_string(kMaxHeader >> 20) + " MB)");
+    needed += count * per_element;
+    const auto header_end = in.tellg();
+    in.seekg(0, std::ios::end);
+    const double data = double(in.tellg() - header_end);
+    if (needed > data)
+        throw SceneError(path.string() + ": cannot read mesh file: the PLY header declares elements that need at least " +
+                         std::to_string(static_cast<unsigned long long>(std::min(needed, 1e19))) + " bytes, but " +
+                         std::to_string(static_cast<long long>(data)) + " bytes follow it (truncated, or wrong counts)");
+}
+
 }  // namespace
 
 MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
     if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
+    check_ply_header(path);
     Assimp::Importer importer;
     const aiScene* ai = importer.ReadFile(path.string(), mode == ReadMode::Strict ? kStrictFlags : kImportFlags);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)

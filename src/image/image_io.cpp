@@ -13,6 +13,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <string>
 #include <system_error>
 #include <unistd.h>
@@ -47,6 +49,14 @@ namespace {
 Image read_pixels(OIIO::ImageInput& input, const std::string& name, ColorEncoding encoding) {
     const OIIO::ImageSpec& spec = input.spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw ImageError(name + ": image has no pixels");
+    // A header may claim any size; refuse one whose float pixels exceed the machine's memory
+    // before allocating (a 58-byte .hdr claiming 100000×100000 gave only "std::bad_alloc").
+    const double bytes = double(spec.width) * double(spec.height) * double(spec.nchannels) * sizeof(float);
+    const double memory = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
+    if (memory > 0.0 && bytes > memory)
+        throw ImageError(name + ": a " + std::to_string(spec.width) + "×" + std::to_string(spec.height) +
+                         " image needs " + std::to_string(std::llround(bytes / 1e9)) +
+                         " GB as floats, more than this machine's memory");
     Image image(spec.width, spec.height, spec.nchannels);
     if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
         throw ImageError(name + ": cannot read image: " + input.geterror());
@@ -79,8 +89,42 @@ OIIO::ImageSpec straight_alpha_config() {
 
 }  // namespace
 
+/// libpng prints its own "libpng error: ..." line to stderr before OpenImageIO reports a
+/// truncated or malformed PNG, so a user's first line named no file. A PNG file's chunks are
+/// walked here first: each must fit in the file, IHDR must have a size libpng accepts (1 to
+/// 10⁶ pixels a side, its default limit), and IEND must be reached.
+void check_png_chunks(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char head[8] = {};
+    if (!in.read(reinterpret_cast<char*>(head), 8) || std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) != 0) return;
+    in.seekg(0, std::ios::end);
+    const auto size = static_cast<uint64_t>(in.tellg());
+    auto fail = [&](const std::string& what) { throw ImageError(path.string() + ": cannot read image: " + what); };
+    for (uint64_t offset = 8, chunk = 0;; ++chunk) {
+        unsigned char h[16] = {};
+        in.seekg(std::streamoff(offset));
+        if (offset + 12 > size || !in.read(reinterpret_cast<char*>(h), offset + 16 <= size ? 16 : 8))
+            fail("truncated PNG (the file ends after " + std::to_string(size) + " bytes, before its IEND chunk)");
+        auto be32 = [](const unsigned char* b) { return uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | b[3]; };
+        const uint64_t length = be32(h);
+        const std::string type(reinterpret_cast<const char*>(h + 4), 4);
+        if (offset + 12 + length > size)
+            fail("truncated PNG (chunk " + type + " of " + std::to_string(length) + " bytes runs past the end of the file)");
+        if (chunk == 0 && type != "IHDR") fail("malformed PNG (the first chunk is not IHDR)");
+        if (type == "IHDR") {
+            const uint32_t width = be32(h + 8), height = offset + 16 <= size ? be32(h + 12) : 0;
+            if (length < 13 || width == 0 || height == 0 || width > 1000000 || height > 1000000)
+                fail("PNG header gives " + std::to_string(width) + "×" + std::to_string(height) +
+                     " pixels (expected 1 to 1000000 a side)");
+        }
+        if (type == "IEND") return;
+        offset += 12 + length;
+    }
+}
+
 Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     if (!std::filesystem::exists(path)) throw ImageError(path.string() + ": no such image file");
+    check_png_chunks(path);
     const OIIO::ImageSpec config = straight_alpha_config();
     auto input = OIIO::ImageInput::open(path.string(), &config);
     if (!input) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
