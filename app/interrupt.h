@@ -1,8 +1,8 @@
 #pragma once
 // Ctrl-C and SIGTERM during a render: the first asks the render to stop after the tiles in
 // flight, so that what is rendered can be written; the second ends the process at once,
-// after removing the image being written, if any (its final name is only ever a complete
-// image: write_image renames a finished temporary file into place).
+// after removing the files being written, if any (final names only ever hold complete
+// files: images and checkpoints are renamed into place when finished).
 
 #include <atomic>
 #include <filesystem>
@@ -13,9 +13,9 @@ namespace glint::app {
 /// One at a time: POSIX handlers are process-wide, so the state they set is too.
 class InterruptGuard {
 public:
-    /// `output` is the image the render will write (its temporary name is removed on a
-    /// second signal).
-    explicit InterruptGuard(const std::filesystem::path& output);
+    /// `temporaries`: the temporary names of the files the render may be writing (the image
+    /// and its checkpoint), removed on a second signal.
+    InterruptGuard(const std::filesystem::path& image_temporary, const std::filesystem::path& checkpoint_temporary);
     ~InterruptGuard();
     InterruptGuard(const InterruptGuard&) = delete;
     InterruptGuard& operator=(const InterruptGuard&) = delete;

@@ -95,6 +95,10 @@ int run_render(const RenderOptions& opt) {
     if (output.empty())
         output = opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
     glint::check_output_path(output);
+    // From here on a first Ctrl-C is a request to stop (during loading, the render then
+    // renders nothing and keeps that), never a kill that loses the image.
+    const std::filesystem::path checkpoint = glint::checkpoint_path_for(output);
+    const InterruptGuard interrupt(glint::temporary_path_for(output), glint::temporary_checkpoint_path(checkpoint));
 
     const auto load_start = Clock::now();
     SceneSource source = load_scene(opt.scene_path, opt.scene);
@@ -116,7 +120,6 @@ int run_render(const RenderOptions& opt) {
     glint::Film film(s.width, s.height);
     glint::TileGrid tiles(s.width, s.height);
     const glint::RenderFingerprint fingerprint = glint::render_fingerprint(opt.scene_path, s);
-    const std::filesystem::path checkpoint = glint::checkpoint_path_for(output);
     if (opt.resume) {
         glint::read_checkpoint(checkpoint, fingerprint, film, tiles);
         if (!opt.quiet)
@@ -148,7 +151,6 @@ int run_render(const RenderOptions& opt) {
     };
 
     ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
-    const InterruptGuard interrupt(output);
     const glint::RenderStats stats = integrator->render(
         scene, s, film,
         [&](uint32_t done, uint32_t total) {

@@ -162,9 +162,12 @@ TOML
 # 11. Ctrl-C keeps the work: the first SIGINT finishes the tiles in flight, writes what is
 # rendered (EXR: with a per-pixel sample count) and exits 130; SIGTERM exits 143; a second
 # signal ends the render at once and leaves no image and no temporary file.
-long=("$scenes/whitted1980.toml" --width 1920 --height 1440 --spp 64 --threads 1 -q)
+# The renders save a checkpoint every 0.1 s: its appearance says the render is under way,
+# however slowly a loaded machine starts the process.
+wait_for() { for _ in $(seq 1 300); do [ -e "$1" ] && return 0; sleep 0.1; done; fail "$1 never appeared"; }
+long=("$scenes/whitted1980.toml" --width 1920 --height 1440 --spp 64 --threads 1 -q --checkpoint-every 0.1)
 "$glint" render "${long[@]}" -o partial.exr 2>err.txt & pid=$!
-sleep 1.5; kill -INT $pid; wait $pid; status=$?
+wait_for partial.exr.checkpoint; kill -INT $pid; wait $pid; status=$?
 [ $status -eq 130 ] || fail "SIGINT: exit status $status, expected 130"
 [ -s partial.exr ] || fail "SIGINT left no partial image"
 grep -q "interrupted: wrote the [0-9]* of 10800 tiles rendered to partial.exr" err.txt ||
@@ -179,11 +182,11 @@ else
   echo "skipped: oiiotool (openimageio-tools) is not installed; the partial EXR's channels are unchecked"
 fi
 "$glint" render "${long[@]}" -o partial.png 2>/dev/null & pid=$!
-sleep 1.5; kill -TERM $pid; wait $pid; status=$?
+wait_for partial.png.checkpoint; kill -TERM $pid; wait $pid; status=$?
 [ $status -eq 143 ] || fail "SIGTERM: exit status $status, expected 143"
 [ -s partial.png ] || fail "SIGTERM left no partial image"
 "$glint" render "${long[@]}" -o twice.exr 2>/dev/null & pid=$!
-sleep 1.5; kill -INT $pid; kill -INT $pid; wait $pid; status=$?
+wait_for twice.exr.checkpoint; kill -INT $pid; kill -INT $pid; wait $pid; status=$?
 [ $status -eq 130 ] || fail "second SIGINT: exit status $status, expected 130"
 ls -a | grep -q "partial-" && fail "a temporary image was left: $(ls -a)"
 
@@ -192,19 +195,19 @@ ls -a | grep -q "partial-" && fail "a temporary image was left: $(ls -a)"
 # periodic checkpoint; another render's checkpoint is refused, saying what differs.
 res=("$scenes/whitted1980.toml" --width 640 --height 480 --spp 16 --threads 1 -q)
 "$glint" render "${res[@]}" -o whole.pfm || fail "uninterrupted render failed"
-"$glint" render "${res[@]}" -o resumed.pfm & pid=$!
-sleep 1; kill -INT $pid; wait $pid
+"$glint" render "${res[@]}" -o resumed.pfm --checkpoint-every 0.1 & pid=$!
+wait_for resumed.pfm.checkpoint; kill -INT $pid; wait $pid
 [ -s resumed.pfm.checkpoint ] || fail "an interrupted render left no checkpoint"
 "$glint" render "${res[@]}" -o resumed.pfm --resume 2>err.txt || fail "--resume failed: $(cat err.txt)"
 cmp -s whole.pfm resumed.pfm || fail "the resumed image differs from the uninterrupted one"
 [ -e resumed.pfm.checkpoint ] && fail "a finished render left its checkpoint"
-"$glint" render "${res[@]}" -o killed.pfm --checkpoint-every 0.2 & pid=$!
-sleep 1.5; kill -KILL $pid; wait $pid 2>/dev/null
+"$glint" render "${res[@]}" -o killed.pfm --checkpoint-every 0.1 & pid=$!
+wait_for killed.pfm.checkpoint; kill -KILL $pid; wait $pid 2>/dev/null
 [ -s killed.pfm.checkpoint ] || fail "--checkpoint-every left no checkpoint behind a killed render"
 "$glint" render "${res[@]}" -o killed.pfm --resume 2>err.txt || fail "resume after kill failed: $(cat err.txt)"
 cmp -s whole.pfm killed.pfm || fail "the image resumed after a kill differs from the uninterrupted one"
-"$glint" render "${res[@]}" -o other.pfm & pid=$!
-sleep 1; kill -INT $pid; wait $pid
+"$glint" render "${res[@]}" -o other.pfm --checkpoint-every 0.1 & pid=$!
+wait_for other.pfm.checkpoint; kill -INT $pid; wait $pid
 if "$glint" render "$scenes/whitted1980.toml" --width 640 --height 480 --spp 4 -q -o other.pfm --resume 2>err.txt; then
   fail "a checkpoint of another render was resumed"; fi
 grep -q "spp: the checkpoint has 16, this render 4" err.txt || fail "mismatch message: $(cat err.txt)"

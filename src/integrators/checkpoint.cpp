@@ -113,6 +113,12 @@ std::filesystem::path checkpoint_path_for(const std::filesystem::path& output) {
     return p;
 }
 
+std::filesystem::path temporary_checkpoint_path(const std::filesystem::path& path) {
+    std::filesystem::path tmp = path;
+    tmp += ".partial-" + std::to_string(::getpid());
+    return tmp;
+}
+
 void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint& fingerprint, const Film& film,
                       const TileGrid& tiles) {
     Writer w;
@@ -137,8 +143,7 @@ void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint
         for (uint32_t y = y0; y < y1; ++y)
             w.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
     }
-    std::filesystem::path tmp = path;
-    tmp += ".partial-" + std::to_string(::getpid());
+    const std::filesystem::path tmp = temporary_checkpoint_path(path);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         out.write(w.bytes.data(), std::streamsize(w.bytes.size()));

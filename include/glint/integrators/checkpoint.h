@@ -33,6 +33,9 @@ using RenderFingerprint = std::vector<std::pair<std::string, std::string>>;
 /// Where the checkpoint of the image `output` lives: beside it, `<output>.checkpoint`.
 [[nodiscard]] std::filesystem::path checkpoint_path_for(const std::filesystem::path& output);
 
+/// The temporary name write_checkpoint writes `path` under before renaming it into place.
+[[nodiscard]] std::filesystem::path temporary_checkpoint_path(const std::filesystem::path& path);
+
 /// Save the finished tiles of `film` with `fingerprint`, under a temporary name renamed into
 /// place (a checkpoint is whole or absent). Safe while other threads render unfinished
 /// tiles: only finished tiles' pixels are read. Throws CheckpointError.
