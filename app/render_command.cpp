@@ -23,7 +23,6 @@ namespace glint::app {
 
 namespace {
 
-
 /// `value` of option `name` if it lies in [lo, hi]; otherwise throws "name: expected ...; got value".
 uint32_t in_range(std::string_view name, int64_t value, int64_t lo, int64_t hi, std::string_view expected = {}) {
     if (value < lo || value > hi)
