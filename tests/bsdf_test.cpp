@@ -3,7 +3,7 @@
 
 #include "chi2.h"
 
-#include "glint/integrators/optics.h"
+#include "glint/materials/optics.h"
 #include "glint/materials/bsdf.h"
 #include "glint/math/constants.h"
 

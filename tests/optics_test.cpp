@@ -1,5 +1,5 @@
 #include "glint/integrators/ior_stack.h"
-#include "glint/integrators/optics.h"
+#include "glint/materials/optics.h"
 #include "glint/math/constants.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #include "glint/materials/bsdf.h"
 
-#include "glint/integrators/optics.h"
+#include "glint/materials/optics.h"
 #include "glint/math/constants.h"
 #include "glint/math/frame.h"
 #include "glint/sampling/warp.h"

@@ -15,8 +15,8 @@
 /// integrators. `eval` and `pdf` see only the smooth lobes; `sample` picks any lobe with a
 /// probability proportional to its weight (Veach 1997, §9.2: one-sample mixture sampling).
 
-#include "glint/integrators/optics.h"
 #include "glint/materials/material.h"
+#include "glint/materials/optics.h"
 #include "glint/math/color.h"
 #include "glint/math/constants.h"
 #include "glint/math/vec2.h"
