@@ -17,6 +17,7 @@ packages=(
   libtbb-dev libopenimageio-dev openimageio-tools libassimp-dev libtomlplusplus-dev
   libcli11-dev libfmt-dev libpcg-cpp-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev
+  clang libclang-rt-14-dev  # libFuzzer and sanitizers for the fuzz targets (fuzz/)
 )
 
 missing=()

@@ -11,7 +11,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export LC_ALL=C  # byte-wise matching: some file names are not UTF-8
 # Under LeakSanitizer (the CI's sanitizer build), leaks inside assimp's error paths are not ours.
-export LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/lsan_assimp.supp"
+export LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/lsan_third_party.supp"
 failures=0
 checks=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }

@@ -61,8 +61,11 @@ struct BinMapping {
             scale[a] = extent[a] > 0.0f ? float(bin_count) * 0.99999f / extent[a] : 0.0f;
     }
     [[nodiscard]] uint32_t bin(float c, int axis) const {
-        const int b = static_cast<int>((c - lo[axis]) * scale[axis]);
-        return static_cast<uint32_t>(std::clamp(b, 0, int(bins) - 1));
+        // Compared as floats first: a centroid far out (c - lo overflowing to inf) or NaN
+        // must not reach an undefined float-to-int conversion.
+        const float f = (c - lo[axis]) * scale[axis];
+        if (!(f > 0.0f)) return 0;
+        return f >= float(bins - 1) ? bins - 1 : static_cast<uint32_t>(f);
     }
 };
 

@@ -91,11 +91,11 @@ Matrix4 node_matrix(const nlohmann::json& node) {
     Vec3 t(0.0f), s(1.0f);
     float q[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     if (node.contains("translation"))
-        t = {node["translation"][0].get<float>(), node["translation"][1].get<float>(), node["translation"][2].get<float>()};
+        t = {node["translation"].at(0).get<float>(), node["translation"].at(1).get<float>(), node["translation"].at(2).get<float>()};
     if (node.contains("scale"))
-        s = {node["scale"][0].get<float>(), node["scale"][1].get<float>(), node["scale"][2].get<float>()};
+        s = {node["scale"].at(0).get<float>(), node["scale"].at(1).get<float>(), node["scale"].at(2).get<float>()};
     if (node.contains("rotation"))
-        for (int i = 0; i < 4; ++i) q[i] = node["rotation"][std::size_t(i)].get<float>();
+        for (int i = 0; i < 4; ++i) q[i] = node["rotation"].at(std::size_t(i)).get<float>();
     return trs_matrix(t, q, s);
 }
 

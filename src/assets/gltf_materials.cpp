@@ -13,7 +13,7 @@ namespace {
 
 Color color3(const nlohmann::json& j, const char* key, Color fallback) {
     if (!j.contains(key) || !j[key].is_array() || j[key].size() < 3) return fallback;
-    return {j[key][0].get<float>(), j[key][1].get<float>(), j[key][2].get<float>()};
+    return {j[key].at(0).get<float>(), j[key].at(1).get<float>(), j[key].at(2).get<float>()};
 }
 
 const nlohmann::json& extension(const nlohmann::json& material, const char* name) {
@@ -99,7 +99,7 @@ MaterialInfo MaterialConverter::convert(int index) {
     float alpha = 1.0f;
     if (pbr.contains("baseColorFactor") && pbr["baseColorFactor"].size() >= 4) {
         base = color3(pbr, "baseColorFactor", base);
-        alpha = pbr["baseColorFactor"][3].get<float>();
+        alpha = pbr["baseColorFactor"].at(3).get<float>();
     }
     const float metallic = std::clamp(pbr.value("metallicFactor", 1.0f), 0.0f, 1.0f);
     const float roughness = std::clamp(pbr.value("roughnessFactor", 1.0f), 0.0f, 1.0f);

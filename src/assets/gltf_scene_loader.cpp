@@ -83,7 +83,7 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
         const std::string name = light.value("name", "light" + std::to_string(index));
         Color color(1.0f);
         if (light.contains("color") && light["color"].size() >= 3)
-            color = {light["color"][0].get<float>(), light["color"][1].get<float>(), light["color"][2].get<float>()};
+            color = {light["color"].at(0).get<float>(), light["color"].at(1).get<float>(), light["color"].at(2).get<float>()};
         const Color glint_intensity = color * (light.value("intensity", 1.0f) * kInvPi);
         const Transform frame = node_frame(placed.world_from_node);
         const Vec3 position = frame.point(Vec3(0.0f));
@@ -168,7 +168,7 @@ void choose_camera(const std::filesystem::path& path, const GltfOptions& options
             settings.height = std::max(1u, uint32_t(std::lround(float(settings.width) / chosen.aspect)));
         notes.mapped("camera: '" + chosen.name + "' (" + std::to_string(report.cameras.size()) + " in the file)");
     } else {
-        scene.camera = framing_camera(scene.world_bounds(), float(settings.width) / float(settings.height));
+        scene.camera = framing_camera(scene.world_bounds(), float(settings.width) / float(settings.height), path);
         notes.mapped("camera: none in the file; automatic camera framing the scene's bounds");
     }
 }

@@ -1,12 +1,13 @@
 #include "mesh_file.h"
 
 #include "gltf_geometry.h"
+#include "import_probe.h"
 #include "name_list.h"
 
 #include "glint/diagnostics.h"
 #include "glint/image/image_io.h"
+#include "glint/util/file_extension.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -249,21 +250,30 @@ std::size_t ply_type_size(const std::string& type) {
 /// element counts a header declares before it reads the data (a 200-byte ASCII file that
 /// declares 10⁹ vertices took 6 GB in 10 s). So a PLY file's header must end, and the data
 /// after it must be long enough for the declared counts: at least one byte per binary
-/// scalar or list length, two characters (a digit and a separator) per ASCII value.
-/// Anything this cannot judge (unknown types, malformed lines) is left to assimp.
+/// scalar or list length, two characters (a digit and a separator) per ASCII value. A
+/// property of an unknown type is refused too: assimp skips nothing for it and reads a
+/// declared 10⁹ vertices of nothing for minutes (found by fuzz/fuzz_ply).
 void check_ply_header(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     char magic[4] = {};
-    if (!in.read(magic, 4) || !(std::string_view(magic, 3) == "ply" || std::string_view(magic, 3) == "PLY") ||
-        !std::isspace(static_cast<unsigned char>(magic[3])))
-        return;  // not PLY: assimp decides by itself
+    const bool has_magic = bool(in.read(magic, 4));
+    if (in.gcount() == 0) return;  // empty: assimp says so
+    const bool ply_start = std::string_view(magic, 3) == "ply" || std::string_view(magic, 3) == "PLY";
+    // assimp reads a file as PLY by its extension or by a "ply" start, and then loops
+    // forever without end_header ("plyA\n..." hung; found by fuzz/fuzz_ply).
+    if (!ply_start && lower_case_extension(path) != ".ply") return;  // not PLY: assimp decides
+    if (!has_magic || !ply_start || !(magic[3] == '\n' || magic[3] == '\r'))
+        throw SceneError(path.string() + ":1: cannot read mesh file: not a PLY file (expected the first line to be 'ply')");
     in.seekg(0);
     constexpr std::size_t kMaxHeader = 1 << 20;
     bool ascii = false, ended = false;
     double needed = 0.0;  // bytes of data the counts imply; double: counts may be absurd
     double count = 0.0, per_element = 0.0;
     std::string line;
+    std::size_t line_number = 0;
     for (std::size_t read = 0; read < kMaxHeader && std::getline(in, line); read += line.size() + 1) {
+        ++line_number;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
         std::istringstream words(line);
         std::string word, a, b;
         words >> word;
@@ -285,7 +295,13 @@ void check_ply_header(const std::filesystem::path& path) {
             const bool list = a == "list";
             if (list) words >> a >> b;  // count type, item type
             const std::size_t size = ply_type_size(a);
-            if (!words || size == 0 || (list && ply_type_size(b) == 0)) return;
+            std::string name;
+            words >> name;
+            if (!words || size == 0 || (list && ply_type_size(b) == 0))
+                throw SceneError(path.string() + ":" + std::to_string(line_number) + ": cannot read mesh file: PLY property " +
+                                 "line '" + line + "' is malformed (expected 'property TYPE NAME' or 'property list " +
+                                 "COUNT_TYPE ITEM_TYPE NAME', types char uchar short ushort int uint float double or " +
+                                 "int8 uint8 int16 uint16 int32 uint32 float32 float64)");
             per_element += ascii ? 2.0 : double(size);
         }
     }
@@ -307,8 +323,11 @@ void check_ply_header(const std::filesystem::path& path) {
 MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
     if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
     check_ply_header(path);
+    const unsigned flags = mode == ReadMode::Strict ? kStrictFlags : kImportFlags;
+    probe_import([&](Assimp::Importer& importer) { importer.ReadFile(path.string(), flags); },
+                 path.string() + ": cannot read mesh file");
     Assimp::Importer importer;
-    const aiScene* ai = importer.ReadFile(path.string(), mode == ReadMode::Strict ? kStrictFlags : kImportFlags);
+    const aiScene* ai = importer.ReadFile(path.string(), flags);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
         throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
     const bool lenient = mode == ReadMode::Lenient;
@@ -318,6 +337,8 @@ MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
 MeshFile read_gltf_geometry(const gltf::Document& doc) {
     std::vector<std::string> warnings;
     const std::string glb = gltf::geometry_glb(doc, warnings);
+    probe_import([&](Assimp::Importer& importer) { importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb"); },
+                 doc.path.string() + ": cannot read the geometry");
     Assimp::Importer importer;
     const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)

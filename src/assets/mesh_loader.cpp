@@ -156,7 +156,7 @@ LoadedScene load_mesh_scene(const std::filesystem::path& path) {
     loaded.warnings = std::move(result.warnings);
     loaded.settings.width = 640;
     loaded.settings.height = 480;
-    loaded.scene.camera = framing_camera(loaded.scene.world_bounds(), 640.0f / 480.0f);
+    loaded.scene.camera = framing_camera(loaded.scene.world_bounds(), 640.0f / 480.0f, path);
     add_default_lighting(loaded.scene);
     return loaded;
 }

@@ -20,7 +20,15 @@ PlacedMeshes place_meshes(Scene& scene, const std::vector<MeshPlacement>& placem
         // singular node's) and so did not keep.
         const auto& mesh = meshes[placement.mesh];
         if (!mesh) continue;
-        scene.add_object(mesh, material(placement.mesh), world_from_file * file_from_mesh, placement.node);
+        const Transform world_from_mesh = world_from_file * file_from_mesh;
+        // A finite mesh under a huge transform can leave float range: infinite vertices
+        // would poison the BVH build and every ray that reaches them (found by fuzz/fuzz_gltf).
+        const Bounds3 world_bounds = world_from_mesh.bounds(mesh->bounds());
+        if (!is_finite(world_bounds.lo) || !is_finite(world_bounds.hi)) {
+            notes.ignored("node placing its mesh beyond the range of float coordinates (a huge transform)", placement.node);
+            continue;
+        }
+        scene.add_object(mesh, material(placement.mesh), world_from_mesh, placement.node);
         ++placed.objects;
         placed.instanced_triangles += mesh->triangle_count();
         placed.meshes.insert(mesh.get());

@@ -4,11 +4,18 @@
 
 #include "glint/scene/scene.h"
 
+#include <filesystem>
+
 namespace glint {
+
+/// Coordinates an automatic camera may take: beyond, squared lengths overflow float.
+inline constexpr double kMaxFramedCoordinate = 1e18;
 
 /// A 40° perspective camera that sees all of `bounds` (a sphere around it fits the smaller
 /// field of view for images of `aspect` = width/height), looking along -z from slightly above.
-[[nodiscard]] Camera framing_camera(const Bounds3& bounds, float aspect);
+/// Throws SceneError naming `file` (the asset the bounds come from) when that camera would
+/// stand beyond ±kMaxFramedCoordinate: absurdly large or distant geometry.
+[[nodiscard]] Camera framing_camera(const Bounds3& bounds, float aspect, const std::filesystem::path& file);
 
 /// Irradiance (Glint units) of the default key light and radiance of the default grey sky:
 /// a white Lambertian surface facing the key light shows 0.75 + 0.2 = 0.95, just below white.

@@ -14,7 +14,7 @@
 
 namespace glint {
 
-class Image;
+struct Image;
 class MeshCache;
 class Scene;
 class Texture;

@@ -1,0 +1,10 @@
+/// \file Fuzz target: a binary glTF 2.0 file (.glb: header, JSON chunk, BIN chunk with
+/// embedded images), loaded as a whole scene and rendered.
+
+#include "fuzz_harness.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const glint::fuzz::ScratchFolder folder;
+    glint::fuzz::load_and_render(folder.write("scene.glb", glint::fuzz::as_text(data, size)));
+    return 0;
+}

@@ -1,0 +1,10 @@
+/// \file Fuzz target: a PLY file, ASCII or binary (little- or big-endian, as its header
+/// says; the seeds hold all three), loaded as a bare mesh scene and rendered.
+
+#include "fuzz_harness.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const glint::fuzz::ScratchFolder folder;
+    glint::fuzz::load_and_render(folder.write("model.ply", glint::fuzz::as_text(data, size)));
+    return 0;
+}
