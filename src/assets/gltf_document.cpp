@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <regex>
 
 namespace glint::gltf {
 
@@ -91,7 +92,8 @@ Matrix4 node_matrix(const nlohmann::json& node) {
     Vec3 t(0.0f), s(1.0f);
     float q[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     if (node.contains("translation"))
-        t = {node["translation"].at(0).get<float>(), node["translation"].at(1).get<float>(), node["translation"].at(2).get<float>()};
+        t = {node["translation"].at(0).get<float>(), node["translation"].at(1).get<float>(),
+             node["translation"].at(2).get<float>()};
     if (node.contains("scale"))
         s = {node["scale"].at(0).get<float>(), node["scale"].at(1).get<float>(), node["scale"].at(2).get<float>()};
     if (node.contains("rotation"))
@@ -114,7 +116,9 @@ Matrix4 trs_matrix(const Vec3& t, const float q[4], const Vec3& s) {
     return m;
 }
 
-bool fits_in(std::size_t offset, std::size_t length, std::size_t size) { return offset <= size && length <= size - offset; }
+bool fits_in(std::size_t offset, std::size_t length, std::size_t size) {
+    return offset <= size && length <= size - offset;
+}
 
 bool elements_fit(std::size_t offset, std::size_t count, std::size_t stride, std::size_t element, std::size_t length) {
     // offset + (count - 1)·stride + element <= length, without the wrap-around a hostile
@@ -124,8 +128,8 @@ bool elements_fit(std::size_t offset, std::size_t count, std::size_t stride, std
 
 std::vector<float> read_floats(const Document& doc, std::size_t index, int components) {
     const auto& accessor = doc.json["accessors"].at(index);
-    const std::size_t count = accessor.at("count").get<std::size_t>();
-    const int type = accessor.at("componentType").get<int>();
+    const std::size_t count = integer<std::size_t>(accessor.at("count"));
+    const int type = integer<int>(accessor.at("componentType"));
     const std::size_t size = type == 5126 || type == 5125 ? 4 : type == 5122 || type == 5123 ? 2 : 1;
     if (!accessor.contains("bufferView")) {  // all zeros, per spec (sparse not supported)
         if (count > kMaxZeroAccessor)
@@ -133,13 +137,13 @@ std::vector<float> read_floats(const Document& doc, std::size_t index, int compo
                                " elements and no data (expected at most " + std::to_string(kMaxZeroAccessor) + ")");
         return std::vector<float>(count * std::size_t(components), 0.0f);
     }
-    const auto& view = doc.json["bufferViews"].at(accessor["bufferView"].get<std::size_t>());
-    const std::size_t buffer = view.at("buffer").get<std::size_t>();
+    const auto& view = doc.json["bufferViews"].at(integer<std::size_t>(accessor["bufferView"]));
+    const std::size_t buffer = integer<std::size_t>(view.at("buffer"));
     const std::size_t element = size * std::size_t(components);
     const std::size_t stride = view.value("byteStride", element);
-    const std::size_t view_offset = view.value("byteOffset", std::size_t(0));
-    const std::size_t view_length = view.at("byteLength").get<std::size_t>();
-    const std::size_t offset = accessor.value("byteOffset", std::size_t(0));
+    const std::size_t view_offset = integer_or<std::size_t>(view, "byteOffset", std::size_t(0));
+    const std::size_t view_length = integer<std::size_t>(view.at("byteLength"));
+    const std::size_t offset = integer_or<std::size_t>(accessor, "byteOffset", std::size_t(0));
     if (buffer >= doc.buffers.size() || !fits_in(view_offset, view_length, doc.buffers[buffer].size()) ||
         stride < element || !elements_fit(offset, count, stride, element, view_length))
         fail(doc.path, "accessor " + std::to_string(index) + " lies outside its buffer view");
@@ -150,17 +154,58 @@ std::vector<float> read_floats(const Document& doc, std::size_t index, int compo
             const unsigned char* p = data + i * stride + std::size_t(c) * size;
             float v = 0.0f;
             switch (type) {
-                case 5126: std::memcpy(&v, p, 4); break;
-                case 5120: v = std::max(float(*reinterpret_cast<const int8_t*>(p)) / 127.0f, -1.0f); break;
-                case 5121: v = float(*p) / 255.0f; break;
-                case 5122: { int16_t x; std::memcpy(&x, p, 2); v = std::max(float(x) / 32767.0f, -1.0f); break; }
-                case 5123: { uint16_t x; std::memcpy(&x, p, 2); v = float(x) / 65535.0f; break; }
-                default: fail(doc.path, "accessor " + std::to_string(index) + " has component type " + std::to_string(type) + " (expected float or normalized integers)");
+                case 5126:
+                    std::memcpy(&v, p, 4);
+                    break;
+                case 5120:
+                    v = std::max(float(*reinterpret_cast<const int8_t*>(p)) / 127.0f, -1.0f);
+                    break;
+                case 5121:
+                    v = float(*p) / 255.0f;
+                    break;
+                case 5122: {
+                    int16_t x;
+                    std::memcpy(&x, p, 2);
+                    v = std::max(float(x) / 32767.0f, -1.0f);
+                    break;
+                }
+                case 5123: {
+                    uint16_t x;
+                    std::memcpy(&x, p, 2);
+                    v = float(x) / 65535.0f;
+                    break;
+                }
+                default:
+                    fail(doc.path, "accessor " + std::to_string(index) + " has component type " + std::to_string(type) +
+                                       " (expected float or normalized integers)");
             }
             out[i * std::size_t(components) + std::size_t(c)] = v;
         }
     return out;
 }
+
+std::string json_error_text(const nlohmann::json::exception& error) {
+    const std::string_view text = error.what();
+    const std::size_t end_of_prefix = text.starts_with("[json.exception.") ? text.find("] ") : text.npos;
+    return std::string(end_of_prefix == text.npos ? text : text.substr(end_of_prefix + 2));
+}
+
+namespace {
+
+/// A JSON syntax error as "file:LINE:COL: invalid glTF JSON: WHY", so that editors jump to
+/// it; in a GLB the lines count within the JSON chunk, so they are named as such.
+std::string parse_failure(const std::filesystem::path& path, const nlohmann::json::exception& error, bool binary) {
+    static const std::regex kPosition(R"(^parse error at line (\d+), column (\d+): (.*)$)");
+    const std::string text = json_error_text(error);
+    std::smatch match;
+    if (!std::regex_match(text, match, kPosition)) return path.string() + ": invalid glTF JSON: " + text;
+    if (binary)
+        return path.string() + ": invalid glTF JSON chunk at line " + match[1].str() + ", column " + match[2].str() +
+               ": " + match[3].str();
+    return path.string() + ":" + match[1].str() + ":" + match[2].str() + ": invalid glTF JSON: " + match[3].str();
+}
+
+}  // namespace
 
 std::size_t array_size(const nlohmann::json& json, const char* key) {
     return json.contains(key) && json[key].is_array() ? json[key].size() : 0;
@@ -176,7 +221,9 @@ Document read_document(const std::filesystem::path& path) {
     std::string json_text;
     doc.binary = bytes.size() >= 4 && read_u32(bytes, 0) == kGlbMagic;
     if (doc.binary) {
-        if (bytes.size() < 20) fail(path, "truncated GLB: " + std::to_string(bytes.size()) + " bytes (expected a 12-byte header and a JSON chunk)");
+        if (bytes.size() < 20)
+            fail(path, "truncated GLB: " + std::to_string(bytes.size()) +
+                           " bytes (expected a 12-byte header and a JSON chunk)");
         const uint32_t version = read_u32(bytes, 4), length = read_u32(bytes, 8);
         if (version != 2) fail(path, "GLB version " + std::to_string(version) + " (expected 2)");
         if (length > bytes.size())
@@ -202,7 +249,7 @@ Document read_document(const std::filesystem::path& path) {
     try {
         doc.json = nlohmann::json::parse(json_text);
     } catch (const nlohmann::json::exception& e) {
-        fail(path, std::string("invalid glTF JSON: ") + e.what());
+        throw SceneError(parse_failure(path, e, doc.binary));
     }
     if (!doc.json.is_object() || !doc.json.contains("asset")) fail(path, "not a glTF 2.0 file (no \"asset\" object)");
     const std::string version = doc.json["asset"].value("version", "");
@@ -211,7 +258,7 @@ Document read_document(const std::filesystem::path& path) {
     const std::size_t buffer_count = array_size(doc.json, "buffers");
     for (std::size_t b = 0; b < buffer_count; ++b) {
         const auto& buffer = doc.json["buffers"][b];
-        const std::size_t declared = buffer.value("byteLength", std::size_t(0));
+        const std::size_t declared = integer_or<std::size_t>(buffer, "byteLength", std::size_t(0));
         std::vector<unsigned char> data;
         if (buffer.contains("uri")) {
             data = read_uri(path, buffer["uri"].get<std::string>(), "buffer", b);
@@ -234,13 +281,14 @@ std::vector<PlacedNode> placed_nodes(const Document& doc) {
     std::vector<int> roots;
     const std::size_t scene_count = array_size(json, "scenes");
     if (scene_count > 0) {
-        const std::size_t scene = std::min<std::size_t>(json.value("scene", 0u), scene_count - 1);
-        for (const auto& n : json["scenes"][scene].value("nodes", nlohmann::json::array())) roots.push_back(n.get<int>());
+        const std::size_t scene = std::min<std::size_t>(integer_or<std::size_t>(json, "scene", 0), scene_count - 1);
+        for (const auto& n : json["scenes"][scene].value("nodes", nlohmann::json::array()))
+            roots.push_back(integer<int>(n));
     } else {
         std::vector<bool> is_child(node_count, false);
         for (const auto& node : json.value("nodes", nlohmann::json::array()))
             for (const auto& c : node.value("children", nlohmann::json::array()))
-                if (c.get<std::size_t>() < node_count) is_child[c.get<std::size_t>()] = true;
+                if (integer<std::size_t>(c) < node_count) is_child[integer<std::size_t>(c)] = true;
         for (std::size_t i = 0; i < node_count; ++i)
             if (!is_child[i]) roots.push_back(int(i));
     }
@@ -252,7 +300,7 @@ std::vector<PlacedNode> placed_nodes(const Document& doc) {
         const auto& node = json["nodes"][std::size_t(n)];
         const Matrix4 world = parent * node_matrix(node);
         placed.push_back({n, world});
-        for (const auto& c : node.value("children", nlohmann::json::array())) visit(c.get<int>(), world);
+        for (const auto& c : node.value("children", nlohmann::json::array())) visit(integer<int>(c), world);
         on_path[std::size_t(n)] = false;
     };
     for (int r : roots) visit(r, Matrix4::identity());
@@ -265,13 +313,14 @@ std::vector<unsigned char> image_bytes(const Document& doc, int index, std::stri
     if (image.contains("uri")) {
         const std::string uri = image["uri"].get<std::string>();
         name = uri.rfind("data:", 0) == 0 ? (uri.find("image/jpeg") != std::string::npos ? "image.jpg" : "image.png")
-                                           : uri;
+                                          : uri;
         return read_uri(doc.path, uri, "image", std::size_t(index));
     }
-    const auto view_index = image.at("bufferView").get<std::size_t>();
+    const auto view_index = integer<std::size_t>(image.at("bufferView"));
     const auto& view = doc.json["bufferViews"].at(view_index);
-    const auto buffer = view.at("buffer").get<std::size_t>();
-    const std::size_t offset = view.value("byteOffset", std::size_t(0)), length = view.at("byteLength").get<std::size_t>();
+    const auto buffer = integer<std::size_t>(view.at("buffer"));
+    const std::size_t offset = integer_or<std::size_t>(view, "byteOffset", std::size_t(0)),
+                      length = integer<std::size_t>(view.at("byteLength"));
     if (buffer >= doc.buffers.size() || !fits_in(offset, length, doc.buffers[buffer].size()))
         fail(doc.path, "image " + std::to_string(index) + ": bufferView " + std::to_string(view_index) +
                            " lies outside its buffer");

@@ -13,7 +13,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glint::gltf {
@@ -70,6 +72,34 @@ inline constexpr std::size_t kMaxZeroAccessor = std::size_t(1) << 24;
 
 /// The matrix T·R·S of a translation, a unit quaternion (x, y, z, w) and a scale.
 [[nodiscard]] Matrix4 trs_matrix(const Vec3& translation, const float rotation[4], const Vec3& scale);
+
+/// `value` as a glTF integer property (an index, count, byte offset or enum). nlohmann's
+/// get<>() converts a float with a plain cast, undefined for -4.383 to std::size_t (found by
+/// fuzz/fuzz_gltf); this throws nlohmann::json::type_error, reported as "malformed glTF",
+/// for anything but an integer within the range of `Integer`.
+template <class Integer>
+[[nodiscard]] Integer integer(const nlohmann::json& value) {
+    if (value.is_number_unsigned()) {
+        if (const auto u = value.get<std::uint64_t>(); std::in_range<Integer>(u)) return Integer(u);
+    } else if (value.is_number_integer()) {
+        if (const auto i = value.get<std::int64_t>(); std::in_range<Integer>(i)) return Integer(i);
+    }
+    const std::string expected = std::numeric_limits<Integer>::min() == 0
+                                     ? "a non-negative integer"
+                                     : "an integer from " + std::to_string(std::numeric_limits<Integer>::min()) +
+                                           " to " + std::to_string(std::numeric_limits<Integer>::max());
+    throw nlohmann::json::type_error::create(302, "expected " + expected + ", got " + value.dump(), &value);
+}
+
+/// nlohmann's message without its "[json.exception.type_error.302] " prefix, which names the
+/// library's internals rather than the file.
+[[nodiscard]] std::string json_error_text(const nlohmann::json::exception& error);
+
+/// `object[key]` as integer(), `fallback` when the key is absent.
+template <class Integer>
+[[nodiscard]] Integer integer_or(const nlohmann::json& object, const char* key, Integer fallback) {
+    return object.contains(key) ? integer<Integer>(object[key]) : fallback;
+}
 
 /// Size of the array `key` at the top level (0 when absent).
 [[nodiscard]] std::size_t array_size(const nlohmann::json& json, const char* key);

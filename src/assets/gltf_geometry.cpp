@@ -10,10 +10,17 @@ namespace {
 
 std::size_t component_size(int type) {
     switch (type) {
-        case 5120: case 5121: return 1;
-        case 5122: case 5123: return 2;
-        case 5125: case 5126: return 4;
-        default: return 0;
+        case 5120:
+        case 5121:
+            return 1;
+        case 5122:
+        case 5123:
+            return 2;
+        case 5125:
+        case 5126:
+            return 4;
+        default:
+            return 0;
     }
 }
 
@@ -34,28 +41,31 @@ void check_accessor(const Document& doc, std::size_t index, const std::string& u
         fail(doc.path, user + " uses accessor " + std::to_string(index) + ", which does not exist");
     const auto& accessor = json["accessors"][index];
     const std::string where = user + ", accessor " + std::to_string(index);
-    const std::size_t element = component_size(accessor.at("componentType").get<int>()) *
+    const std::size_t element = component_size(integer<int>(accessor.at("componentType"))) *
                                 component_count(accessor.at("type").get<std::string>());
     if (element == 0) fail(doc.path, where + ": unknown componentType or type");
     if (!accessor.contains("bufferView")) {
         if (accessor.contains("sparse")) return;
-        fail(doc.path, where + ": no bufferView (compressed geometry such as KHR_draco_mesh_compression is not supported)");
+        fail(doc.path,
+             where + ": no bufferView (compressed geometry such as KHR_draco_mesh_compression is not supported)");
     }
-    const auto view_index = accessor["bufferView"].get<std::size_t>();
+    const auto view_index = integer<std::size_t>(accessor["bufferView"]);
     if (view_index >= array_size(json, "bufferViews"))
         fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " does not exist");
     const auto& view = json["bufferViews"][view_index];
-    const auto buffer = view.at("buffer").get<std::size_t>();
-    const std::size_t view_offset = view.value("byteOffset", std::size_t(0));
-    const std::size_t view_length = view.at("byteLength").get<std::size_t>();
+    const auto buffer = integer<std::size_t>(view.at("buffer"));
+    const std::size_t view_offset = integer_or<std::size_t>(view, "byteOffset", std::size_t(0));
+    const std::size_t view_length = integer<std::size_t>(view.at("byteLength"));
     if (!fits_in(view_offset, view_length, buffer < doc.buffers.size() ? doc.buffers[buffer].size() : 0))
         fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " lies outside its buffer");
-    const std::size_t count = accessor.at("count").get<std::size_t>();
+    const std::size_t count = integer<std::size_t>(accessor.at("count"));
     const std::size_t stride = view.value("byteStride", element);
     if (stride < element)
-        fail(doc.path, where + ": byteStride " + std::to_string(stride) + " of bufferView " + std::to_string(view_index) +
-                           " is smaller than an element (" + std::to_string(element) + " bytes)");
-    if (!elements_fit(accessor.value("byteOffset", std::size_t(0)), count, stride, element, view_length))
+        fail(doc.path, where + ": byteStride " + std::to_string(stride) + " of bufferView " +
+                           std::to_string(view_index) + " is smaller than an element (" + std::to_string(element) +
+                           " bytes)");
+    if (!elements_fit(integer_or<std::size_t>(accessor, "byteOffset", std::size_t(0)), count, stride, element,
+                      view_length))
         fail(doc.path, where + ": " + std::to_string(count) + " elements do not fit in bufferView " +
                            std::to_string(view_index) + " (" + std::to_string(view_length) + " bytes)");
 }
@@ -64,13 +74,14 @@ void check_accessor(const Document& doc, std::size_t index, const std::string& u
 std::size_t count_bad_indices(const Document& doc, std::size_t index, std::size_t vertices) {
     const auto& accessor = doc.json["accessors"][index];
     if (!accessor.contains("bufferView")) return 0;
-    const auto& view = doc.json["bufferViews"][accessor["bufferView"].get<std::size_t>()];
-    const std::size_t size = component_size(accessor["componentType"].get<int>());
+    const auto& view = doc.json["bufferViews"][integer<std::size_t>(accessor["bufferView"])];
+    const std::size_t size = component_size(integer<int>(accessor["componentType"]));
     const std::size_t stride = view.value("byteStride", size);
-    const unsigned char* data = doc.buffers[view["buffer"].get<std::size_t>()].data() +
-                                view.value("byteOffset", std::size_t(0)) + accessor.value("byteOffset", std::size_t(0));
+    const unsigned char* data = doc.buffers[integer<std::size_t>(view["buffer"])].data() +
+                                integer_or<std::size_t>(view, "byteOffset", std::size_t(0)) +
+                                integer_or<std::size_t>(accessor, "byteOffset", std::size_t(0));
     std::size_t bad = 0;
-    for (std::size_t i = 0, n = accessor["count"].get<std::size_t>(); i < n; ++i) {
+    for (std::size_t i = 0, n = integer<std::size_t>(accessor["count"]); i < n; ++i) {
         uint32_t v = 0;
         std::memcpy(&v, data + i * stride, size);  // little-endian: the low bytes come first
         bad += v >= vertices;
@@ -101,14 +112,14 @@ void add_nodes(const Document& doc, json& out) {
         for (const char* key : {"name", "matrix", "translation", "rotation", "scale"})
             if (node.contains(key)) n[key] = node[key];
         if (node.contains("mesh")) {
-            if (node["mesh"].get<std::size_t>() >= mesh_count)
-                fail(doc.path, "node " + std::to_string(i) + " uses mesh " + std::to_string(node["mesh"].get<std::size_t>()) +
-                                   ", which does not exist");
+            if (integer<std::size_t>(node["mesh"]) >= mesh_count)
+                fail(doc.path, "node " + std::to_string(i) + " uses mesh " +
+                                   std::to_string(integer<std::size_t>(node["mesh"])) + ", which does not exist");
             n["mesh"] = node["mesh"];
         }
         json children = json::array();
         for (const auto& c : node.value("children", json::array())) {
-            const auto child = c.get<std::size_t>();
+            const auto child = integer<std::size_t>(c);
             if (child >= node_count || parent[child] >= 0 || is_ancestor(child, i)) continue;
             parent[child] = int(i);
             children.push_back(child);
@@ -122,7 +133,7 @@ void add_nodes(const Document& doc, json& out) {
     for (const auto& scene : in["scenes"]) {
         json roots = json::array();
         for (const auto& r : scene.value("nodes", json::array()))
-            if (r.get<std::size_t>() < node_count && parent[r.get<std::size_t>()] < 0) roots.push_back(r);
+            if (integer<std::size_t>(r) < node_count && parent[integer<std::size_t>(r)] < 0) roots.push_back(r);
         out["scenes"].push_back({{"nodes", std::move(roots)}});
     }
 }
@@ -142,15 +153,17 @@ void add_meshes(const Document& doc, json& out, std::vector<std::string>& warnin
             json kept = {{"attributes", primitive.at("attributes")}};
             if (!primitive["attributes"].contains("POSITION")) fail(doc.path, user + " has no POSITION attribute");
             for (const auto& [name, accessor] : primitive["attributes"].items())
-                check_accessor(doc, accessor.get<std::size_t>(), user + " attribute " + name);
+                check_accessor(doc, integer<std::size_t>(accessor), user + " attribute " + name);
             if (primitive.contains("indices")) {
-                const auto indices = primitive["indices"].get<std::size_t>();
+                const auto indices = integer<std::size_t>(primitive["indices"]);
                 check_accessor(doc, indices, user + " indices");
-                const auto vertices = in["accessors"][primitive["attributes"]["POSITION"].get<std::size_t>()]["count"];
-                if (const std::size_t bad = count_bad_indices(doc, indices, vertices.get<std::size_t>()); bad > 0)
+                const auto vertices =
+                    in["accessors"][integer<std::size_t>(primitive["attributes"]["POSITION"])]["count"];
+                if (const std::size_t bad = count_bad_indices(doc, indices, integer<std::size_t>(vertices)); bad > 0)
                     warnings.push_back(doc.path.string() + ": " + user + ": " + std::to_string(bad) +
                                        " out-of-range vertex index(es) (expected below " +
-                                       std::to_string(vertices.get<std::size_t>()) + "); their triangles are dropped");
+                                       std::to_string(integer<std::size_t>(vertices)) +
+                                       "); their triangles are dropped");
                 kept["indices"] = indices;
             }
             if (primitive.contains("mode")) kept["mode"] = primitive["mode"];
@@ -176,10 +189,11 @@ std::string add_merged_buffer(const Document& doc, json& out) {
     out["bufferViews"] = json::array();
     for (const auto& view : doc.json.value("bufferViews", json::array())) {
         json v = json::object();
-        const auto buffer = view.at("buffer").get<std::size_t>();
-        if (buffer >= base.size()) fail(doc.path, "a bufferView uses buffer " + std::to_string(buffer) + ", which does not exist");
+        const auto buffer = integer<std::size_t>(view.at("buffer"));
+        if (buffer >= base.size())
+            fail(doc.path, "a bufferView uses buffer " + std::to_string(buffer) + ", which does not exist");
         v["buffer"] = 0;
-        v["byteOffset"] = base[buffer] + view.value("byteOffset", std::size_t(0));
+        v["byteOffset"] = base[buffer] + integer_or<std::size_t>(view, "byteOffset", std::size_t(0));
         v["byteLength"] = view.at("byteLength");
         if (view.contains("byteStride")) v["byteStride"] = view["byteStride"];
         out["bufferViews"].push_back(std::move(v));
@@ -218,7 +232,7 @@ std::vector<uint32_t> primitive_materials(const Document& doc) {
     const auto none = static_cast<uint32_t>(array_size(doc.json, "materials"));
     for (const auto& mesh : doc.json.value("meshes", nlohmann::json::array()))
         for (const auto& primitive : mesh.value("primitives", nlohmann::json::array())) {
-            const auto m = primitive.value("material", std::size_t(none));
+            const auto m = integer_or<std::size_t>(primitive, "material", std::size_t(none));
             result.push_back(m < none ? static_cast<uint32_t>(m) : none);
         }
     return result;
@@ -243,13 +257,15 @@ std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file) {
         if (!node.contains("mesh") || !node.contains("extensions") ||
             !node["extensions"].contains("EXT_mesh_gpu_instancing"))
             continue;
-        const auto mesh = node["mesh"].get<std::size_t>();
+        const auto mesh = integer<std::size_t>(node["mesh"]);
         if (mesh >= first_primitive.size()) continue;
-        const auto& attributes = node["extensions"]["EXT_mesh_gpu_instancing"].value("attributes", nlohmann::json::object());
+        const auto& attributes =
+            node["extensions"]["EXT_mesh_gpu_instancing"].value("attributes", nlohmann::json::object());
         std::vector<float> t, r, sc;
-        if (attributes.contains("TRANSLATION")) t = read_floats(doc, attributes["TRANSLATION"].get<std::size_t>(), 3);
-        if (attributes.contains("ROTATION")) r = read_floats(doc, attributes["ROTATION"].get<std::size_t>(), 4);
-        if (attributes.contains("SCALE")) sc = read_floats(doc, attributes["SCALE"].get<std::size_t>(), 3);
+        if (attributes.contains("TRANSLATION"))
+            t = read_floats(doc, integer<std::size_t>(attributes["TRANSLATION"]), 3);
+        if (attributes.contains("ROTATION")) r = read_floats(doc, integer<std::size_t>(attributes["ROTATION"]), 4);
+        if (attributes.contains("SCALE")) sc = read_floats(doc, integer<std::size_t>(attributes["SCALE"]), 3);
         const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
         if (count == 0) continue;
         const std::size_t lo = first_primitive[mesh], hi = lo + json["meshes"][mesh]["primitives"].size();

@@ -60,21 +60,23 @@ std::shared_ptr<const Image> MaterialConverter::image(int index) {
 const Texture* MaterialConverter::texture(const nlohmann::json& info, const std::string& material_name,
                                           const char* slot) {
     if (!info.is_object() || !info.contains("index")) return nullptr;
-    if (info.value("texCoord", 0) != 0)
+    if (integer_or<int>(info, "texCoord", 0) != 0)
         notes_.ignored(std::string("texCoord set other than 0 (") + slot + "): set 0 used", material_name);
     if (info.contains("extensions") && info["extensions"].contains("KHR_texture_transform"))
         notes_.ignored("KHR_texture_transform (texture offset/scale/rotation)", material_name);
-    const int t = info["index"].get<int>();
+    const int t = integer<int>(info["index"]);
     auto it = textures_.find(t);
     if (it != textures_.end()) return it->second;
     const Texture* result = nullptr;
     if (t >= 0 && std::size_t(t) < array_size(doc_.json, "textures")) {
         const auto& tex = doc_.json["textures"][std::size_t(t)];
         if (tex.contains("source")) {
-            if (auto img = image(tex["source"].get<int>())) {
+            if (auto img = image(integer<int>(tex["source"]))) {
                 WrapMode wrap = WrapMode::Repeat;
-                if (tex.contains("sampler") && tex["sampler"].get<std::size_t>() < array_size(doc_.json, "samplers")) {
-                    const int wrap_s = doc_.json["samplers"][tex["sampler"].get<std::size_t>()].value("wrapS", 10497);
+                if (tex.contains("sampler") &&
+                    integer<std::size_t>(tex["sampler"]) < array_size(doc_.json, "samplers")) {
+                    const int wrap_s =
+                        integer_or<int>(doc_.json["samplers"][integer<std::size_t>(tex["sampler"])], "wrapS", 10497);
                     if (wrap_s == 33071) wrap = WrapMode::Clamp;  // CLAMP_TO_EDGE; MIRRORED_REPEAT maps to repeat
                 }
                 result = scene_.add_texture(std::make_unique<ImageTexture>(std::move(img), wrap));
@@ -121,8 +123,7 @@ MaterialInfo MaterialConverter::convert(int index) {
     m.shininess = std::clamp(2.0f / (a * a) - 2.0f, 1.0f, 1e4f);
     m.specular = roughness < 1.0f ? lerp(metallic, Color(0.04f), base) : Color(0.0f);
     m.roughness = roughness;
-    if (pbr.contains("metallicRoughnessTexture"))
-        notes_.ignored("metallicRoughnessTexture (factors used)", name);
+    if (pbr.contains("metallicRoughnessTexture")) notes_.ignored("metallicRoughnessTexture (factors used)", name);
 
     // Emission: factor × KHR_materials_emissive_strength × texture, as radiance.
     const float strength = extension(j, "KHR_materials_emissive_strength").value("emissiveStrength", 1.0f);

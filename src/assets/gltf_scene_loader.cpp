@@ -7,8 +7,8 @@
 #include "place_meshes.h"
 
 #include "glint/diagnostics.h"
-#include "glint/scene/asset_defaults.h"
 #include "glint/math/constants.h"
+#include "glint/scene/asset_defaults.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +39,7 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json["nodes"][std::size_t(placed.node)];
         if (!node.contains("camera")) continue;
-        const auto index = node["camera"].get<std::size_t>();
+        const auto index = gltf::integer<std::size_t>(node["camera"]);
         if (index >= gltf::array_size(json, "cameras")) continue;
         const auto& cam = json["cameras"][index];
         const Transform frame = node_frame(placed.world_from_node);
@@ -77,13 +77,14 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json["nodes"][std::size_t(placed.node)];
         if (!node.contains("extensions") || !node["extensions"].contains("KHR_lights_punctual")) continue;
-        const auto index = node["extensions"]["KHR_lights_punctual"].value("light", std::size_t(-1));
+        const auto index = gltf::integer_or<std::size_t>(node["extensions"]["KHR_lights_punctual"], "light", std::size_t(-1));
         if (index >= lights.size()) continue;
         const auto& light = lights[index];
         const std::string name = light.value("name", "light" + std::to_string(index));
         Color color(1.0f);
         if (light.contains("color") && light["color"].size() >= 3)
-            color = {light["color"].at(0).get<float>(), light["color"].at(1).get<float>(), light["color"].at(2).get<float>()};
+            color = {light["color"].at(0).get<float>(), light["color"].at(1).get<float>(),
+                     light["color"].at(2).get<float>()};
         const Color glint_intensity = color * (light.value("intensity", 1.0f) * kInvPi);
         const Transform frame = node_frame(placed.world_from_node);
         const Vec3 position = frame.point(Vec3(0.0f));
@@ -120,7 +121,8 @@ void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNod
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json["nodes"][std::size_t(placed.node)];
         if (node.contains("skin"))
-            notes.ignored("skin (mesh drawn in its bind pose)", node.value("name", "node" + std::to_string(placed.node)));
+            notes.ignored("skin (mesh drawn in its bind pose)",
+                          node.value("name", "node" + std::to_string(placed.node)));
     }
     std::size_t m = 0;
     for (const auto& mesh : json.value("meshes", nlohmann::json::array())) {
@@ -241,7 +243,8 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     }
     report.mapped = notes.mapped_lines();
     report.ignored = notes.ignored_lines();
-    for (const std::string& line : report.ignored) result.loaded.warnings.push_back(path.string() + ": ignored " + line);
+    for (const std::string& line : report.ignored)
+        result.loaded.warnings.push_back(path.string() + ": ignored " + line);
     return result;
 }
 
@@ -252,7 +255,7 @@ GltfScene load_gltf_scene(const std::filesystem::path& path, const GltfOptions& 
         return load(path, options);
     } catch (const nlohmann::json::exception& e) {
         // A structurally broken file (wrong types, dangling indices) the checks above missed.
-        throw SceneError(path.string() + ": malformed glTF: " + e.what());
+        throw SceneError(path.string() + ": malformed glTF: " + gltf::json_error_text(e));
     }
 }
 
