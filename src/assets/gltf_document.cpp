@@ -4,11 +4,11 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
 #include <iterator>
-#include <regex>
 
 namespace glint::gltf {
 
@@ -84,7 +84,7 @@ std::vector<unsigned char> read_uri(const std::filesystem::path& gltf, const std
 Matrix4 node_matrix(const nlohmann::json& node) {
     Matrix4 m = Matrix4::identity();
     if (node.contains("matrix")) {
-        const auto& a = node["matrix"];
+        const auto& a = node.at("matrix");
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) m.m[r][c] = a.at(std::size_t(c * 4 + r)).get<float>();  // column-major
         return m;
@@ -92,12 +92,13 @@ Matrix4 node_matrix(const nlohmann::json& node) {
     Vec3 t(0.0f), s(1.0f);
     float q[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     if (node.contains("translation"))
-        t = {node["translation"].at(0).get<float>(), node["translation"].at(1).get<float>(),
-             node["translation"].at(2).get<float>()};
+        t = {node.at("translation").at(0).get<float>(), node.at("translation").at(1).get<float>(),
+             node.at("translation").at(2).get<float>()};
     if (node.contains("scale"))
-        s = {node["scale"].at(0).get<float>(), node["scale"].at(1).get<float>(), node["scale"].at(2).get<float>()};
+        s = {node.at("scale").at(0).get<float>(), node.at("scale").at(1).get<float>(),
+             node.at("scale").at(2).get<float>()};
     if (node.contains("rotation"))
-        for (int i = 0; i < 4; ++i) q[i] = node["rotation"].at(std::size_t(i)).get<float>();
+        for (int i = 0; i < 4; ++i) q[i] = node.at("rotation").at(std::size_t(i)).get<float>();
     return trs_matrix(t, q, s);
 }
 
@@ -127,7 +128,7 @@ bool elements_fit(std::size_t offset, std::size_t count, std::size_t stride, std
 }
 
 std::vector<float> read_floats(const Document& doc, std::size_t index, int components) {
-    const auto& accessor = doc.json["accessors"].at(index);
+    const auto& accessor = doc.json.at("accessors").at(index);
     const std::size_t count = integer<std::size_t>(accessor.at("count"));
     const int type = integer<int>(accessor.at("componentType"));
     const std::size_t size = type == 5126 || type == 5125 ? 4 : type == 5122 || type == 5123 ? 2 : 1;
@@ -137,10 +138,10 @@ std::vector<float> read_floats(const Document& doc, std::size_t index, int compo
                                " elements and no data (expected at most " + std::to_string(kMaxZeroAccessor) + ")");
         return std::vector<float>(count * std::size_t(components), 0.0f);
     }
-    const auto& view = doc.json["bufferViews"].at(integer<std::size_t>(accessor["bufferView"]));
+    const auto& view = doc.json.at("bufferViews").at(integer<std::size_t>(accessor.at("bufferView")));
     const std::size_t buffer = integer<std::size_t>(view.at("buffer"));
     const std::size_t element = size * std::size_t(components);
-    const std::size_t stride = view.value("byteStride", element);
+    const std::size_t stride = integer_or<std::size_t>(view, "byteStride", element);
     const std::size_t view_offset = integer_or<std::size_t>(view, "byteOffset", std::size_t(0));
     const std::size_t view_length = integer<std::size_t>(view.at("byteLength"));
     const std::size_t offset = integer_or<std::size_t>(accessor, "byteOffset", std::size_t(0));
@@ -195,14 +196,19 @@ namespace {
 /// A JSON syntax error as "file:LINE:COL: invalid glTF JSON: WHY", so that editors jump to
 /// it; in a GLB the lines count within the JSON chunk, so they are named as such.
 std::string parse_failure(const std::filesystem::path& path, const nlohmann::json::exception& error, bool binary) {
-    static const std::regex kPosition(R"(^parse error at line (\d+), column (\d+): (.*)$)");
+    // nlohmann words it "parse error at line L, column C: WHY". Parsed by hand: std::regex
+    // recurses per character and overflowed the stack on a long WHY (found by fuzz_gltf).
     const std::string text = json_error_text(error);
-    std::smatch match;
-    if (!std::regex_match(text, match, kPosition)) return path.string() + ": invalid glTF JSON: " + text;
+    unsigned line = 0, column = 0;
+    int consumed = 0;
+    if (std::sscanf(text.c_str(), "parse error at line %u, column %u: %n", &line, &column, &consumed) != 2 ||
+        consumed == 0)
+        return path.string() + ": invalid glTF JSON: " + text;
+    const std::string why = text.substr(std::size_t(consumed));
     if (binary)
-        return path.string() + ": invalid glTF JSON chunk at line " + match[1].str() + ", column " + match[2].str() +
-               ": " + match[3].str();
-    return path.string() + ":" + match[1].str() + ":" + match[2].str() + ": invalid glTF JSON: " + match[3].str();
+        return path.string() + ": invalid glTF JSON chunk at line " + std::to_string(line) + ", column " +
+               std::to_string(column) + ": " + why;
+    return path.string() + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid glTF JSON: " + why;
 }
 
 }  // namespace
@@ -252,16 +258,16 @@ Document read_document(const std::filesystem::path& path) {
         throw SceneError(parse_failure(path, e, doc.binary));
     }
     if (!doc.json.is_object() || !doc.json.contains("asset")) fail(path, "not a glTF 2.0 file (no \"asset\" object)");
-    const std::string version = doc.json["asset"].value("version", "");
+    const std::string version = doc.json.at("asset").value("version", "");
     if (version.rfind("2.", 0) != 0) fail(path, "glTF version '" + version + "' (expected 2.x)");
 
     const std::size_t buffer_count = array_size(doc.json, "buffers");
     for (std::size_t b = 0; b < buffer_count; ++b) {
-        const auto& buffer = doc.json["buffers"][b];
+        const auto& buffer = doc.json.at("buffers").at(b);
         const std::size_t declared = integer_or<std::size_t>(buffer, "byteLength", std::size_t(0));
         std::vector<unsigned char> data;
         if (buffer.contains("uri")) {
-            data = read_uri(path, buffer["uri"].get<std::string>(), "buffer", b);
+            data = read_uri(path, buffer.at("uri").get<std::string>(), "buffer", b);
         } else if (b == 0 && has_bin_chunk) {
             data = std::move(bin_chunk);
         } else {
@@ -282,7 +288,7 @@ std::vector<PlacedNode> placed_nodes(const Document& doc) {
     const std::size_t scene_count = array_size(json, "scenes");
     if (scene_count > 0) {
         const std::size_t scene = std::min<std::size_t>(integer_or<std::size_t>(json, "scene", 0), scene_count - 1);
-        for (const auto& n : json["scenes"][scene].value("nodes", nlohmann::json::array()))
+        for (const auto& n : json.at("scenes").at(scene).value("nodes", nlohmann::json::array()))
             roots.push_back(integer<int>(n));
     } else {
         std::vector<bool> is_child(node_count, false);
@@ -297,7 +303,7 @@ std::vector<PlacedNode> placed_nodes(const Document& doc) {
     std::function<void(int, const Matrix4&)> visit = [&](int n, const Matrix4& parent) {
         if (n < 0 || std::size_t(n) >= node_count || on_path[std::size_t(n)]) return;
         on_path[std::size_t(n)] = true;
-        const auto& node = json["nodes"][std::size_t(n)];
+        const auto& node = json.at("nodes").at(std::size_t(n));
         const Matrix4 world = parent * node_matrix(node);
         placed.push_back({n, world});
         for (const auto& c : node.value("children", nlohmann::json::array())) visit(integer<int>(c), world);
@@ -308,16 +314,16 @@ std::vector<PlacedNode> placed_nodes(const Document& doc) {
 }
 
 std::vector<unsigned char> image_bytes(const Document& doc, int index, std::string& name) {
-    const auto& image = doc.json["images"].at(std::size_t(index));
+    const auto& image = doc.json.at("images").at(std::size_t(index));
     const std::string mime = image.value("mimeType", "");
     if (image.contains("uri")) {
-        const std::string uri = image["uri"].get<std::string>();
+        const std::string uri = image.at("uri").get<std::string>();
         name = uri.rfind("data:", 0) == 0 ? (uri.find("image/jpeg") != std::string::npos ? "image.jpg" : "image.png")
                                           : uri;
         return read_uri(doc.path, uri, "image", std::size_t(index));
     }
     const auto view_index = integer<std::size_t>(image.at("bufferView"));
-    const auto& view = doc.json["bufferViews"].at(view_index);
+    const auto& view = doc.json.at("bufferViews").at(view_index);
     const auto buffer = integer<std::size_t>(view.at("buffer"));
     const std::size_t offset = integer_or<std::size_t>(view, "byteOffset", std::size_t(0)),
                       length = integer<std::size_t>(view.at("byteLength"));

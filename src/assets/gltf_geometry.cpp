@@ -39,7 +39,7 @@ void check_accessor(const Document& doc, std::size_t index, const std::string& u
     const auto& json = doc.json;
     if (index >= array_size(json, "accessors"))
         fail(doc.path, user + " uses accessor " + std::to_string(index) + ", which does not exist");
-    const auto& accessor = json["accessors"][index];
+    const auto& accessor = json.at("accessors").at(index);
     const std::string where = user + ", accessor " + std::to_string(index);
     const std::size_t element = component_size(integer<int>(accessor.at("componentType"))) *
                                 component_count(accessor.at("type").get<std::string>());
@@ -49,17 +49,17 @@ void check_accessor(const Document& doc, std::size_t index, const std::string& u
         fail(doc.path,
              where + ": no bufferView (compressed geometry such as KHR_draco_mesh_compression is not supported)");
     }
-    const auto view_index = integer<std::size_t>(accessor["bufferView"]);
+    const auto view_index = integer<std::size_t>(accessor.at("bufferView"));
     if (view_index >= array_size(json, "bufferViews"))
         fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " does not exist");
-    const auto& view = json["bufferViews"][view_index];
+    const auto& view = json.at("bufferViews").at(view_index);
     const auto buffer = integer<std::size_t>(view.at("buffer"));
     const std::size_t view_offset = integer_or<std::size_t>(view, "byteOffset", std::size_t(0));
     const std::size_t view_length = integer<std::size_t>(view.at("byteLength"));
     if (!fits_in(view_offset, view_length, buffer < doc.buffers.size() ? doc.buffers[buffer].size() : 0))
         fail(doc.path, where + ": bufferView " + std::to_string(view_index) + " lies outside its buffer");
     const std::size_t count = integer<std::size_t>(accessor.at("count"));
-    const std::size_t stride = view.value("byteStride", element);
+    const std::size_t stride = integer_or<std::size_t>(view, "byteStride", element);
     if (stride < element)
         fail(doc.path, where + ": byteStride " + std::to_string(stride) + " of bufferView " +
                            std::to_string(view_index) + " is smaller than an element (" + std::to_string(element) +
@@ -72,16 +72,16 @@ void check_accessor(const Document& doc, std::size_t index, const std::string& u
 
 /// Number of index values of accessor `index` (already checked) that are >= `vertices`.
 std::size_t count_bad_indices(const Document& doc, std::size_t index, std::size_t vertices) {
-    const auto& accessor = doc.json["accessors"][index];
+    const auto& accessor = doc.json.at("accessors").at(index);
     if (!accessor.contains("bufferView")) return 0;
-    const auto& view = doc.json["bufferViews"][integer<std::size_t>(accessor["bufferView"])];
-    const std::size_t size = component_size(integer<int>(accessor["componentType"]));
-    const std::size_t stride = view.value("byteStride", size);
-    const unsigned char* data = doc.buffers[integer<std::size_t>(view["buffer"])].data() +
+    const auto& view = doc.json.at("bufferViews").at(integer<std::size_t>(accessor.at("bufferView")));
+    const std::size_t size = component_size(integer<int>(accessor.at("componentType")));
+    const std::size_t stride = integer_or<std::size_t>(view, "byteStride", size);
+    const unsigned char* data = doc.buffers[integer<std::size_t>(view.at("buffer"))].data() +
                                 integer_or<std::size_t>(view, "byteOffset", std::size_t(0)) +
                                 integer_or<std::size_t>(accessor, "byteOffset", std::size_t(0));
     std::size_t bad = 0;
-    for (std::size_t i = 0, n = integer<std::size_t>(accessor["count"]); i < n; ++i) {
+    for (std::size_t i = 0, n = integer<std::size_t>(accessor.at("count")); i < n; ++i) {
         uint32_t v = 0;
         std::memcpy(&v, data + i * stride, size);  // little-endian: the low bytes come first
         bad += v >= vertices;
@@ -107,15 +107,15 @@ void add_nodes(const Document& doc, json& out) {
     };
     out["nodes"] = json::array();
     for (std::size_t i = 0; i < node_count; ++i) {
-        const auto& node = in["nodes"][i];
+        const auto& node = in.at("nodes").at(i);
         json n = json::object();
         for (const char* key : {"name", "matrix", "translation", "rotation", "scale"})
             if (node.contains(key)) n[key] = node[key];
         if (node.contains("mesh")) {
-            if (integer<std::size_t>(node["mesh"]) >= mesh_count)
+            if (integer<std::size_t>(node.at("mesh")) >= mesh_count)
                 fail(doc.path, "node " + std::to_string(i) + " uses mesh " +
-                                   std::to_string(integer<std::size_t>(node["mesh"])) + ", which does not exist");
-            n["mesh"] = node["mesh"];
+                                   std::to_string(integer<std::size_t>(node.at("mesh"))) + ", which does not exist");
+            n["mesh"] = node.at("mesh");
         }
         json children = json::array();
         for (const auto& c : node.value("children", json::array())) {
@@ -127,10 +127,10 @@ void add_nodes(const Document& doc, json& out) {
         if (!children.empty()) n["children"] = std::move(children);
         out["nodes"].push_back(std::move(n));
     }
-    if (in.contains("scene")) out["scene"] = in["scene"];
+    if (in.contains("scene")) out["scene"] = in.at("scene");
     if (!in.contains("scenes")) return;
     out["scenes"] = json::array();
-    for (const auto& scene : in["scenes"]) {
+    for (const auto& scene : in.at("scenes")) {
         json roots = json::array();
         for (const auto& r : scene.value("nodes", json::array()))
             if (integer<std::size_t>(r) < node_count && parent[integer<std::size_t>(r)] < 0) roots.push_back(r);
@@ -145,20 +145,20 @@ void add_meshes(const Document& doc, json& out, std::vector<std::string>& warnin
     const json& in = doc.json;
     out["meshes"] = json::array();
     for (std::size_t m = 0, mesh_count = array_size(in, "meshes"); m < mesh_count; ++m) {
-        const auto& mesh = in["meshes"][m];
+        const auto& mesh = in.at("meshes").at(m);
         json primitives = json::array();
         std::size_t p = 0;
         for (const auto& primitive : mesh.at("primitives")) {
             const std::string user = "mesh " + std::to_string(m) + " primitive " + std::to_string(p++);
             json kept = {{"attributes", primitive.at("attributes")}};
-            if (!primitive["attributes"].contains("POSITION")) fail(doc.path, user + " has no POSITION attribute");
-            for (const auto& [name, accessor] : primitive["attributes"].items())
+            if (!primitive.at("attributes").contains("POSITION")) fail(doc.path, user + " has no POSITION attribute");
+            for (const auto& [name, accessor] : primitive.at("attributes").items())
                 check_accessor(doc, integer<std::size_t>(accessor), user + " attribute " + name);
             if (primitive.contains("indices")) {
-                const auto indices = integer<std::size_t>(primitive["indices"]);
+                const auto indices = integer<std::size_t>(primitive.at("indices"));
                 check_accessor(doc, indices, user + " indices");
                 const auto vertices =
-                    in["accessors"][integer<std::size_t>(primitive["attributes"]["POSITION"])]["count"];
+                    in.at("accessors").at(integer<std::size_t>(primitive.at("attributes").at("POSITION"))).at("count");
                 if (const std::size_t bad = count_bad_indices(doc, indices, integer<std::size_t>(vertices)); bad > 0)
                     warnings.push_back(doc.path.string() + ": " + user + ": " + std::to_string(bad) +
                                        " out-of-range vertex index(es) (expected below " +
@@ -166,14 +166,14 @@ void add_meshes(const Document& doc, json& out, std::vector<std::string>& warnin
                                        "); their triangles are dropped");
                 kept["indices"] = indices;
             }
-            if (primitive.contains("mode")) kept["mode"] = primitive["mode"];
+            if (primitive.contains("mode")) kept["mode"] = primitive.at("mode");
             primitives.push_back(std::move(kept));
         }
         json kept_mesh = {{"primitives", std::move(primitives)}};
-        if (mesh.contains("name")) kept_mesh["name"] = mesh["name"];
+        if (mesh.contains("name")) kept_mesh["name"] = mesh.at("name");
         out["meshes"].push_back(std::move(kept_mesh));
     }
-    if (in.contains("accessors")) out["accessors"] = in["accessors"];
+    if (in.contains("accessors")) out["accessors"] = in.at("accessors");
 }
 
 /// The document's buffers merged into one, each 4-byte aligned, with "bufferViews" shifted
@@ -195,7 +195,7 @@ std::string add_merged_buffer(const Document& doc, json& out) {
         v["buffer"] = 0;
         v["byteOffset"] = base[buffer] + integer_or<std::size_t>(view, "byteOffset", std::size_t(0));
         v["byteLength"] = view.at("byteLength");
-        if (view.contains("byteStride")) v["byteStride"] = view["byteStride"];
+        if (view.contains("byteStride")) v["byteStride"] = view.at("byteStride");
         out["bufferViews"].push_back(std::move(v));
     }
     out["buffers"] = json::array({{{"byteLength", bin.size()}}});
@@ -253,22 +253,22 @@ std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file) {
     if (next != file.meshes.size()) return 0;  // numbering not as expected: keep assimp's placements
     std::size_t instances = 0;
     for (const PlacedNode& placed : nodes) {
-        const auto& node = json["nodes"][std::size_t(placed.node)];
+        const auto& node = json.at("nodes").at(std::size_t(placed.node));
         if (!node.contains("mesh") || !node.contains("extensions") ||
-            !node["extensions"].contains("EXT_mesh_gpu_instancing"))
+            !node.at("extensions").contains("EXT_mesh_gpu_instancing"))
             continue;
-        const auto mesh = integer<std::size_t>(node["mesh"]);
+        const auto mesh = integer<std::size_t>(node.at("mesh"));
         if (mesh >= first_primitive.size()) continue;
         const auto& attributes =
-            node["extensions"]["EXT_mesh_gpu_instancing"].value("attributes", nlohmann::json::object());
+            node.at("extensions").at("EXT_mesh_gpu_instancing").value("attributes", nlohmann::json::object());
         std::vector<float> t, r, sc;
         if (attributes.contains("TRANSLATION"))
-            t = read_floats(doc, integer<std::size_t>(attributes["TRANSLATION"]), 3);
-        if (attributes.contains("ROTATION")) r = read_floats(doc, integer<std::size_t>(attributes["ROTATION"]), 4);
-        if (attributes.contains("SCALE")) sc = read_floats(doc, integer<std::size_t>(attributes["SCALE"]), 3);
+            t = read_floats(doc, integer<std::size_t>(attributes.at("TRANSLATION")), 3);
+        if (attributes.contains("ROTATION")) r = read_floats(doc, integer<std::size_t>(attributes.at("ROTATION")), 4);
+        if (attributes.contains("SCALE")) sc = read_floats(doc, integer<std::size_t>(attributes.at("SCALE")), 3);
         const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
         if (count == 0) continue;
-        const std::size_t lo = first_primitive[mesh], hi = lo + json["meshes"][mesh]["primitives"].size();
+        const std::size_t lo = first_primitive[mesh], hi = lo + json.at("meshes").at(mesh).at("primitives").size();
         // Drop assimp's single placement of this node (same meshes, same world matrix).
         std::erase_if(file.placements, [&](const MeshPlacement& p) {
             return p.mesh >= lo && p.mesh < hi && p.file_from_mesh == placed.world_from_node;

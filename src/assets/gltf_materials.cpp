@@ -18,7 +18,8 @@ Color color3(const nlohmann::json& j, const char* key, Color fallback) {
 
 const nlohmann::json& extension(const nlohmann::json& material, const char* name) {
     static const nlohmann::json empty = nlohmann::json::object();
-    if (material.contains("extensions") && material["extensions"].contains(name)) return material["extensions"][name];
+    if (material.contains("extensions") && material.at("extensions").contains(name))
+        return material.at("extensions").at(name);
     return empty;
 }
 
@@ -49,8 +50,10 @@ std::shared_ptr<const Image> MaterialConverter::image(int index) {
     try {
         const std::vector<unsigned char> bytes = image_bytes(doc_, index, name);
         result = std::make_shared<const Image>(decode_image(bytes, name));
-    } catch (const std::exception& e) {
+    } catch (const nlohmann::json::exception& e) {
         // A missing or broken texture costs the material its texture, not the render.
+        notes_.ignored("texture image " + std::to_string(index) + " could not be read: " + json_error_text(e), "");
+    } catch (const std::exception& e) {
         notes_.ignored("texture image " + std::to_string(index) + " could not be read: " + e.what(), "");
     }
     images_[index] = result;
@@ -62,21 +65,21 @@ const Texture* MaterialConverter::texture(const nlohmann::json& info, const std:
     if (!info.is_object() || !info.contains("index")) return nullptr;
     if (integer_or<int>(info, "texCoord", 0) != 0)
         notes_.ignored(std::string("texCoord set other than 0 (") + slot + "): set 0 used", material_name);
-    if (info.contains("extensions") && info["extensions"].contains("KHR_texture_transform"))
+    if (info.contains("extensions") && info.at("extensions").contains("KHR_texture_transform"))
         notes_.ignored("KHR_texture_transform (texture offset/scale/rotation)", material_name);
-    const int t = integer<int>(info["index"]);
+    const int t = integer<int>(info.at("index"));
     auto it = textures_.find(t);
     if (it != textures_.end()) return it->second;
     const Texture* result = nullptr;
     if (t >= 0 && std::size_t(t) < array_size(doc_.json, "textures")) {
-        const auto& tex = doc_.json["textures"][std::size_t(t)];
+        const auto& tex = doc_.json.at("textures").at(std::size_t(t));
         if (tex.contains("source")) {
-            if (auto img = image(integer<int>(tex["source"]))) {
+            if (auto img = image(integer<int>(tex.at("source")))) {
                 WrapMode wrap = WrapMode::Repeat;
                 if (tex.contains("sampler") &&
-                    integer<std::size_t>(tex["sampler"]) < array_size(doc_.json, "samplers")) {
-                    const int wrap_s =
-                        integer_or<int>(doc_.json["samplers"][integer<std::size_t>(tex["sampler"])], "wrapS", 10497);
+                    integer<std::size_t>(tex.at("sampler")) < array_size(doc_.json, "samplers")) {
+                    const int wrap_s = integer_or<int>(
+                        doc_.json.at("samplers").at(integer<std::size_t>(tex.at("sampler"))), "wrapS", 10497);
                     if (wrap_s == 33071) wrap = WrapMode::Clamp;  // CLAMP_TO_EDGE; MIRRORED_REPEAT maps to repeat
                 }
                 result = scene_.add_texture(std::make_unique<ImageTexture>(std::move(img), wrap));
@@ -91,7 +94,7 @@ const Texture* MaterialConverter::texture(const nlohmann::json& info, const std:
 
 MaterialInfo MaterialConverter::convert(int index) {
     static const nlohmann::json default_material = nlohmann::json::object();
-    const nlohmann::json& j = index < 0 ? default_material : doc_.json["materials"][std::size_t(index)];
+    const nlohmann::json& j = index < 0 ? default_material : doc_.json.at("materials").at(std::size_t(index));
     Material m;
     m.name = index < 0 ? "gltf_default" : j.value("name", "material" + std::to_string(index));
     const std::string& name = m.name;
@@ -99,9 +102,9 @@ MaterialInfo MaterialConverter::convert(int index) {
 
     Color base(1.0f);
     float alpha = 1.0f;
-    if (pbr.contains("baseColorFactor") && pbr["baseColorFactor"].size() >= 4) {
+    if (pbr.contains("baseColorFactor") && pbr.at("baseColorFactor").size() >= 4) {
         base = color3(pbr, "baseColorFactor", base);
-        alpha = pbr["baseColorFactor"].at(3).get<float>();
+        alpha = pbr.at("baseColorFactor").at(3).get<float>();
     }
     const float metallic = std::clamp(pbr.value("metallicFactor", 1.0f), 0.0f, 1.0f);
     const float roughness = std::clamp(pbr.value("roughnessFactor", 1.0f), 0.0f, 1.0f);
@@ -129,7 +132,7 @@ MaterialInfo MaterialConverter::convert(int index) {
     const float strength = extension(j, "KHR_materials_emissive_strength").value("emissiveStrength", 1.0f);
     m.emission = color3(j, "emissiveFactor", Color(0.0f)) * strength;
     if (j.contains("emissiveTexture")) {
-        m.emission_texture = texture(j["emissiveTexture"], name, "emissiveTexture");
+        m.emission_texture = texture(j.at("emissiveTexture"), name, "emissiveTexture");
         if (m.emission.is_black() && m.emission_texture) m.emission_texture = nullptr;  // factor 0 turns it off
     }
 
@@ -166,7 +169,7 @@ MaterialInfo MaterialConverter::convert(int index) {
     if (j.contains("normalTexture")) notes_.ignored("normalTexture (no normal mapping; geometric normals used)", name);
     if (j.contains("occlusionTexture")) notes_.ignored("occlusionTexture (no ambient occlusion)", name);
     if (j.contains("extensions"))
-        for (const auto& [ext, value] : j["extensions"].items())
+        for (const auto& [ext, value] : j.at("extensions").items())
             if (!is_mapped_material_extension(ext)) notes_.ignored("material extension " + ext, name);
 
     info.scene_material = scene_.add_material(std::move(m));

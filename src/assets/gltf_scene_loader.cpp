@@ -37,11 +37,11 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
                      ImportNotes& notes) {
     const auto& json = doc.json;
     for (const gltf::PlacedNode& placed : nodes) {
-        const auto& node = json["nodes"][std::size_t(placed.node)];
+        const auto& node = json.at("nodes").at(std::size_t(placed.node));
         if (!node.contains("camera")) continue;
-        const auto index = gltf::integer<std::size_t>(node["camera"]);
+        const auto index = gltf::integer<std::size_t>(node.at("camera"));
         if (index >= gltf::array_size(json, "cameras")) continue;
-        const auto& cam = json["cameras"][index];
+        const auto& cam = json.at("cameras").at(index);
         const Transform frame = node_frame(placed.world_from_node);
         const Vec3 eye = frame.point(Vec3(0.0f));
         const Vec3 forward = frame.vector(Vec3(0.0f, 0.0f, -1.0f));
@@ -72,19 +72,20 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
 void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, Scene& scene,
                     GltfReport& report, ImportNotes& notes) {
     const auto& json = doc.json;
-    if (!json.contains("extensions") || !json["extensions"].contains("KHR_lights_punctual")) return;
-    const auto& lights = json["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
+    if (!json.contains("extensions") || !json.at("extensions").contains("KHR_lights_punctual")) return;
+    const auto& lights = json.at("extensions").at("KHR_lights_punctual").value("lights", nlohmann::json::array());
     for (const gltf::PlacedNode& placed : nodes) {
-        const auto& node = json["nodes"][std::size_t(placed.node)];
-        if (!node.contains("extensions") || !node["extensions"].contains("KHR_lights_punctual")) continue;
-        const auto index = gltf::integer_or<std::size_t>(node["extensions"]["KHR_lights_punctual"], "light", std::size_t(-1));
+        const auto& node = json.at("nodes").at(std::size_t(placed.node));
+        if (!node.contains("extensions") || !node.at("extensions").contains("KHR_lights_punctual")) continue;
+        const auto index =
+            gltf::integer_or<std::size_t>(node.at("extensions").at("KHR_lights_punctual"), "light", std::size_t(-1));
         if (index >= lights.size()) continue;
         const auto& light = lights[index];
         const std::string name = light.value("name", "light" + std::to_string(index));
         Color color(1.0f);
-        if (light.contains("color") && light["color"].size() >= 3)
-            color = {light["color"].at(0).get<float>(), light["color"].at(1).get<float>(),
-                     light["color"].at(2).get<float>()};
+        if (light.contains("color") && light.at("color").size() >= 3)
+            color = {light.at("color").at(0).get<float>(), light.at("color").at(1).get<float>(),
+                     light.at("color").at(2).get<float>()};
         const Color glint_intensity = color * (light.value("intensity", 1.0f) * kInvPi);
         const Transform frame = node_frame(placed.world_from_node);
         const Vec3 position = frame.point(Vec3(0.0f));
@@ -119,7 +120,7 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
 void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, ImportNotes& notes) {
     const auto& json = doc.json;
     for (const gltf::PlacedNode& placed : nodes) {
-        const auto& node = json["nodes"][std::size_t(placed.node)];
+        const auto& node = json.at("nodes").at(std::size_t(placed.node));
         if (node.contains("skin"))
             notes.ignored("skin (mesh drawn in its bind pose)",
                           node.value("name", "node" + std::to_string(placed.node)));
