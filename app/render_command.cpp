@@ -14,10 +14,10 @@
 
 #include <fmt/core.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace glint::app {
 
@@ -26,10 +26,9 @@ namespace {
 /// `value` of option `name` if it lies in [lo, hi]; otherwise throws "name: expected ...; got value".
 uint32_t in_range(std::string_view name, int64_t value, int64_t lo, int64_t hi, std::string_view expected = {}) {
     if (value < lo || value > hi)
-        throw std::invalid_argument(fmt::format("{}: expected {}; got {}", name,
-                                                expected.empty() ? fmt::format("an integer from {} to {}", lo, hi)
-                                                                 : std::string(expected),
-                                                value));
+        throw std::invalid_argument(fmt::format(
+            "{}: expected {}; got {}", name,
+            expected.empty() ? fmt::format("an integer from {} to {}", lo, hi) : std::string(expected), value));
     return static_cast<uint32_t>(value);
 }
 
@@ -41,7 +40,8 @@ void apply_overrides(const RenderOptions& opt, glint::RenderSettings& s) {
     if (opt.spp) {
         const std::string expected =
             fmt::format("a square number 1, 4, 9, ... up to {} (N×N stratified samples)", Limits::kMaxSpp);
-        const std::optional<uint32_t> n = glint::samples_per_axis(in_range("--spp", *opt.spp, 1, Limits::kMaxSpp, expected));
+        const std::optional<uint32_t> n =
+            glint::samples_per_axis(in_range("--spp", *opt.spp, 1, Limits::kMaxSpp, expected));
         if (!n) throw std::invalid_argument(fmt::format("--spp: expected {}; got {}", expected, *opt.spp));
         s.samples_per_axis = *n;
     }
@@ -50,21 +50,24 @@ void apply_overrides(const RenderOptions& opt, glint::RenderSettings& s) {
         s.threads = in_range("--threads", *opt.threads, 0, Limits::kMaxThreads,
                              fmt::format("0 (all cores) or a thread count up to {}", Limits::kMaxThreads));
     if (opt.seed) {
-        if (*opt.seed < 0) throw std::invalid_argument(fmt::format("--seed: expected a non-negative integer; got {}", *opt.seed));
+        if (*opt.seed < 0)
+            throw std::invalid_argument(fmt::format("--seed: expected a non-negative integer; got {}", *opt.seed));
         s.seed = static_cast<uint64_t>(*opt.seed);
     }
     if (opt.filter) {
         s.filter = *glint::filter_from_name(*opt.filter);  // CLI11 checked the name
-        s.filter_radius = 0.0f;                             // a filter named here takes its own default radius
+        s.filter_radius = 0.0f;                            // a filter named here takes its own default radius
     }
     if (opt.filter_radius) {
         if (!(*opt.filter_radius > 0.0 && *opt.filter_radius <= Limits::kMaxFilterRadius))
-            throw std::invalid_argument(fmt::format("--filter-radius: expected a radius in pixels above 0 and at most {}; got {}",
-                                                    Limits::kMaxFilterRadius, *opt.filter_radius));
+            throw std::invalid_argument(
+                fmt::format("--filter-radius: expected a radius in pixels above 0 and at most {}; got {}",
+                            Limits::kMaxFilterRadius, *opt.filter_radius));
         s.filter_radius = static_cast<float>(*opt.filter_radius);
     }
     if (opt.integrator) s.integrator = *opt.integrator;
-    if (opt.light_samples) s.light_samples = in_range("--light-samples", *opt.light_samples, 1, Limits::kMaxLightSamples);
+    if (opt.light_samples)
+        s.light_samples = in_range("--light-samples", *opt.light_samples, 1, Limits::kMaxLightSamples);
     if (opt.mis) s.mis = *opt.mis == "balance" ? glint::MisHeuristic::Balance : glint::MisHeuristic::Power;
     if (opt.checkpoint_every && !(*opt.checkpoint_every > 0.0))
         throw std::invalid_argument(
@@ -79,9 +82,10 @@ void check_memory(const glint::RenderSettings& s) {
     const double needed = pixels * (sizeof(glint::Color) + sizeof(float) + 2 * 3 * sizeof(float));
     const double available = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
     if (available > 0.0 && needed > available)
-        throw std::invalid_argument(fmt::format("a {}×{} image needs about {:.1f} GB for its film and output, but this "
-                                                "machine has {:.1f} GB of memory",
-                                                s.width, s.height, needed / 1e9, available / 1e9));
+        throw std::invalid_argument(
+            fmt::format("a {}×{} image needs about {:.1f} GB for its film and output, but this "
+                        "machine has {:.1f} GB of memory",
+                        s.width, s.height, needed / 1e9, available / 1e9));
 }
 
 }  // namespace
@@ -92,10 +96,10 @@ int run_render(const RenderOptions& opt) {
     apply_overrides(opt, checked);
     std::string output = opt.output;
     if (output.empty())
-        output = opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
+        output =
+            opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
     glint::check_output_path(output);
-    // From here on a first Ctrl-C is a request to stop (during loading, the render then
-    // renders nothing and keeps that), never a kill that loses the image.
+    // From here on a first Ctrl-C is a request to stop, never a kill that loses the image.
     const std::filesystem::path checkpoint = glint::checkpoint_path_for(output);
     const InterruptGuard interrupt(glint::temporary_path_for(output), glint::temporary_checkpoint_path(checkpoint));
 
@@ -115,6 +119,12 @@ int run_render(const RenderOptions& opt) {
     const auto build_start = Clock::now();
     const glint::RenderScene scene(std::move(loaded.scene));
     const double build_seconds = seconds_since(build_start);
+    if (interrupt.stop()) {
+        // Stopped before a pixel was rendered: an empty image would only replace what the
+        // output (or a checkpoint to resume) held before.
+        fmt::print(stderr, "interrupted while loading: nothing was rendered, nothing written\n");
+        return 128 + interrupt.signal();
+    }
 
     glint::Film film(s.width, s.height);
     glint::TileGrid tiles(s.width, s.height);

@@ -8,12 +8,14 @@
 #include "glint/scene/render_scene.h"
 #include "glint/scene_file.h"
 
+#include <tbb/global_control.h>
+
+#include <unistd.h>
 #include <algorithm>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 namespace glint::fuzz {
 
@@ -51,6 +53,10 @@ void ScratchFolder::link(std::string_view name, const std::filesystem::path& tar
 }
 
 void load_and_render(const std::filesystem::path& scene_file) {
+    // No worker threads: every assimp import forks (src/assets/import_probe.h), and clang 14's
+    // ASan allocator is not fork-safe; a TBB worker freeing memory as the next input forks
+    // left the child waiting on that allocator's lock forever (timeouts in fuzz_ply).
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     LoadedScene loaded;
     try {
         loaded = std::move(load_scene_file(scene_file).loaded);

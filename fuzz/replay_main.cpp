@@ -46,6 +46,10 @@ int main(int argc, char** argv) {
             ++count;
         }
     }
+    if (count == 0) {  // a replay of nothing would pass whatever the target did
+        std::fprintf(stderr, "nothing to replay: expected a corpus or regression inputs\n");
+        return 1;
+    }
     std::printf("%zu inputs replayed without a crash\n", count);
     return 0;
 }

@@ -195,9 +195,11 @@ ls -a | grep -q "partial-" && fail "a temporary image was left: $(ls -a)"
 # periodic checkpoint; another render's checkpoint is refused, saying what differs.
 res=("$scenes/whitted1980.toml" --width 640 --height 480 --spp 16 --threads 1 -q)
 "$glint" render "${res[@]}" -o whole.pfm || fail "uninterrupted render failed"
-"$glint" render "${res[@]}" -o resumed.pfm --checkpoint-every 0.1 & pid=$!
+# (The periodic checkpoint only starts the interruption; the one written on SIGINT is named.)
+"$glint" render "${res[@]}" -o resumed.pfm --checkpoint-every 0.1 2>err.txt & pid=$!
 wait_for resumed.pfm.checkpoint; kill -INT $pid; wait $pid
-[ -s resumed.pfm.checkpoint ] || fail "an interrupted render left no checkpoint"
+[ -s resumed.pfm.checkpoint ] && grep -q "; checkpoint resumed.pfm.checkpoint (continue with --resume)" err.txt ||
+  fail "an interrupted render left no checkpoint: $(cat err.txt)"
 "$glint" render "${res[@]}" -o resumed.pfm --resume 2>err.txt || fail "--resume failed: $(cat err.txt)"
 cmp -s whole.pfm resumed.pfm || fail "the resumed image differs from the uninterrupted one"
 [ -e resumed.pfm.checkpoint ] && fail "a finished render left its checkpoint"

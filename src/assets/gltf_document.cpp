@@ -123,7 +123,9 @@ bool fits_in(std::size_t offset, std::size_t length, std::size_t size) {
 
 bool elements_fit(std::size_t offset, std::size_t count, std::size_t stride, std::size_t element, std::size_t length) {
     // offset + (count - 1)·stride + element <= length, without the wrap-around a hostile
-    // count or offset would get from writing it so (stride >= element >= 1).
+    // count or offset would get from writing it so (stride >= element >= 1). Even with no
+    // elements the offset must lie inside: the reader forms data + offset.
+    if (offset > length) return false;
     return count == 0 || (fits_in(offset, element, length) && count - 1 <= (length - offset - element) / stride);
 }
 
@@ -253,7 +255,12 @@ Document read_document(const std::filesystem::path& path) {
         json_text.assign(bytes.begin(), bytes.end());
     }
     try {
-        doc.json = nlohmann::json::parse(json_text);
+        // nlohmann parses iteratively but copies and prints recursively, so a deeply nested
+        // file (found by fuzz_gltf) is refused here rather than overflowing the stack later.
+        doc.json = nlohmann::json::parse(json_text, [&](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+            if (depth > kMaxNesting) fail(path, "JSON nested deeper than " + std::to_string(kMaxNesting) + " levels");
+            return true;
+        });
     } catch (const nlohmann::json::exception& e) {
         throw SceneError(parse_failure(path, e, doc.binary));
     }

@@ -70,6 +70,10 @@ inline constexpr std::size_t kMaxZeroAccessor = std::size_t(1) << 24;
 /// mapped to [0, 1] / [-1, 1] as the spec says). Throws SceneError if it lies outside its buffer.
 [[nodiscard]] std::vector<float> read_floats(const Document& doc, std::size_t index, int components);
 
+/// Deepest nesting of JSON objects and arrays accepted; glTF itself needs about six levels,
+/// and `extras` written by tools rarely more than a few.
+inline constexpr int kMaxNesting = 64;
+
 /// The matrix T·R·S of a translation, a unit quaternion (x, y, z, w) and a scale.
 [[nodiscard]] Matrix4 trs_matrix(const Vec3& translation, const float rotation[4], const Vec3& scale);
 
@@ -88,7 +92,9 @@ template <class Integer>
                                      ? "a non-negative integer"
                                      : "an integer from " + std::to_string(std::numeric_limits<Integer>::min()) +
                                            " to " + std::to_string(std::numeric_limits<Integer>::max());
-    throw nlohmann::json::type_error::create(302, "expected " + expected + ", got " + value.dump(), &value);
+    // A number is shown; anything else by its type, since it may be large or deeply nested.
+    const std::string got = value.is_number() ? value.dump() : std::string(value.type_name());
+    throw nlohmann::json::type_error::create(302, "expected " + expected + ", got " + got, &value);
 }
 
 /// nlohmann's message without its "[json.exception.type_error.302] " prefix, which names the

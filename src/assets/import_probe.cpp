@@ -2,13 +2,15 @@
 
 #include "glint/diagnostics.h"
 
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace glint {
 
@@ -18,12 +20,15 @@ namespace {
 constexpr std::size_t kMaxChildMessage = 4096;
 
 /// Runs in the child. Never returns.
-[[noreturn]] void import_in_child(const std::function<void(Assimp::Importer&)>& import) {
+[[noreturn]] void import_in_child(const std::function<void(Assimp::Importer&)>& import, pid_t parent) {
     // A crash must end this process plainly, for the parent to see it: not through the
     // handlers of a sanitizer or fuzzer (which would report it as the parent's crash), and
     // not through the parent's Ctrl-C handler (the parent decides about interruptions).
     for (int signal : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGPIPE}) std::signal(signal, SIG_DFL);
     for (int signal : {SIGINT, SIGTERM}) std::signal(signal, SIG_IGN);
+    // ...but it must not outlive the parent: a second Ctrl-C, a timeout or a kill ends both.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);  // the parent died before prctl took effect
     Assimp::Importer importer;
     import(importer);
     ::_exit(0);  // no exit handlers, no flushing of the parent's buffered output
@@ -37,7 +42,8 @@ std::string read_messages(int fd) {
         const ssize_t n = ::read(fd, buffer.data(), buffer.size());
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) return text;
-        text.append(buffer.data(), std::min(std::size_t(n), kMaxChildMessage - std::min(text.size(), kMaxChildMessage)));
+        text.append(buffer.data(),
+                    std::min(std::size_t(n), kMaxChildMessage - std::min(text.size(), kMaxChildMessage)));
     }
 }
 
@@ -50,15 +56,18 @@ std::string first_line(const std::string& text) {
 }  // namespace
 
 void probe_import(const std::function<void(Assimp::Importer&)>& import, const std::string& context) {
+    std::fflush(nullptr);  // or the child would inherit, and print, the parent's pending output
     int messages[2];
-    if (::pipe(messages) != 0) throw SceneError(context + ": cannot start the importer process: " + std::strerror(errno));
+    if (::pipe(messages) != 0)
+        throw SceneError(context + ": cannot start the importer process: " + std::strerror(errno));
+    const pid_t parent = ::getpid();
     const pid_t child = ::fork();
     if (child == 0) {
         ::close(messages[0]);
         ::dup2(messages[1], STDOUT_FILENO);
         ::dup2(messages[1], STDERR_FILENO);
         ::close(messages[1]);
-        import_in_child(import);
+        import_in_child(import, parent);
     }
     ::close(messages[1]);
     if (child < 0) {
@@ -70,10 +79,14 @@ void probe_import(const std::function<void(Assimp::Importer&)>& import, const st
     int status = 0;
     while (::waitpid(child, &status, 0) < 0)
         if (errno != EINTR) throw SceneError(context + ": lost the importer process: " + std::strerror(errno));
-    if (WIFSIGNALED(status))
-        throw SceneError(context + ": assimp crashed on this file (" + ::strsignal(WTERMSIG(status)) + ")" +
-                         (printed.empty() ? std::string() : ": " + printed) +
-                         "; the file is malformed or uses something assimp cannot read");
+    // The child ends with status 0 whatever assimp made of the file; anything else (a
+    // signal, or a sanitizer's exit status 1) means the import is not safe to repeat here.
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+    const std::string how = WIFSIGNALED(status) ? std::string(::strsignal(WTERMSIG(status)))
+                                                : "exit status " + std::to_string(WEXITSTATUS(status));
+    throw SceneError(context + ": assimp crashed on this file (" + how + ")" +
+                     (printed.empty() ? std::string() : ": " + printed) +
+                     "; the file is malformed or uses something assimp cannot read");
 }
 
 }  // namespace glint

@@ -7,6 +7,10 @@
 /// (with a scene or with assimp's error) shows that the same import is safe in this
 /// process, since assimp reads the same bytes the same way.
 ///
+/// Forking is safe here because scenes load before the renderer starts worker threads and
+/// glibc's malloc prepares for fork; an allocator that does not (clang 14's ASan) needs a
+/// single-threaded caller, which is why fuzz/fuzz_harness.cpp keeps TBB to one thread.
+///
 /// Internal to src/assets.
 
 #include <assimp/Importer.hpp>

@@ -3,6 +3,7 @@
 #include "gltf_geometry.h"
 #include "import_probe.h"
 #include "name_list.h"
+#include "ply_header.h"
 
 #include "glint/diagnostics.h"
 #include "glint/image/image_io.h"
@@ -13,10 +14,8 @@
 #include <assimp/scene.h>
 
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <set>
-#include <sstream>
 
 namespace glint {
 
@@ -45,8 +44,8 @@ struct Conversion {
 
 Matrix4 to_matrix(const aiMatrix4x4& a) {
     Matrix4 m;
-    const float rows[4][4] = {{a.a1, a.a2, a.a3, a.a4}, {a.b1, a.b2, a.b3, a.b4},
-                              {a.c1, a.c2, a.c3, a.c4}, {a.d1, a.d2, a.d3, a.d4}};
+    const float rows[4][4] = {
+        {a.a1, a.a2, a.a3, a.a4}, {a.b1, a.b2, a.b3, a.b4}, {a.c1, a.c2, a.c3, a.c4}, {a.d1, a.d2, a.d3, a.d4}};
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c) m.m[r][c] = rows[r][c];
     return m;
@@ -173,7 +172,8 @@ std::vector<std::string> animation_warnings(const std::filesystem::path& path, c
     std::vector<std::string> lines;
     auto names = [](const std::vector<std::string>& list) { return quoted_names(list, list.size()); };
     if (!file.skinned_meshes.empty())
-        lines.push_back(path.string() + ": ignored skins: meshes drawn in their bind pose (" + names(file.skinned_meshes) + ")");
+        lines.push_back(path.string() + ": ignored skins: meshes drawn in their bind pose (" +
+                        names(file.skinned_meshes) + ")");
     if (!file.morphed_meshes.empty())
         lines.push_back(path.string() + ": ignored morph targets: meshes drawn with their base shape (" +
                         names(file.morphed_meshes) + ")");
@@ -236,88 +236,6 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, Con
     return file;
 }
 
-/// Bytes of one PLY scalar type, 0 if unknown.
-std::size_t ply_type_size(const std::string& type) {
-    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
-        return 4;
-    if (type == "double" || type == "float64") return 8;
-    return 0;
-}
-
-/// assimp 5.2.5 loops forever on a PLY header without `end_header`, and allocates for the
-/// element counts a header declares before it reads the data (a 200-byte ASCII file that
-/// declares 10⁹ vertices took 6 GB in 10 s). So a PLY file's header must end, and the data
-/// after it must be long enough for the declared counts: at least one byte per binary
-/// scalar or list length, two characters (a digit and a separator) per ASCII value. A
-/// property of an unknown type is refused too: assimp skips nothing for it and reads a
-/// declared 10⁹ vertices of nothing for minutes (found by fuzz/fuzz_ply).
-void check_ply_header(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    const bool has_magic = bool(in.read(magic, 4));
-    if (in.gcount() == 0) return;  // empty: assimp says so
-    const bool ply_start = std::string_view(magic, 3) == "ply" || std::string_view(magic, 3) == "PLY";
-    // assimp reads a file as PLY by its extension or by a "ply" start, and then loops
-    // forever without end_header ("plyA\n..." hung; found by fuzz/fuzz_ply).
-    if (!ply_start && lower_case_extension(path) != ".ply") return;  // not PLY: assimp decides
-    if (!has_magic || !ply_start || !(magic[3] == '\n' || magic[3] == '\r'))
-        throw SceneError(path.string() + ":1: cannot read mesh file: not a PLY file (expected the first line to be 'ply')");
-    in.seekg(0);
-    constexpr std::size_t kMaxHeader = 1 << 20;
-    bool ascii = false, ended = false;
-    double needed = 0.0;  // bytes of data the counts imply; double: counts may be absurd
-    double count = 0.0, per_element = 0.0;
-    std::string line;
-    std::size_t line_number = 0;
-    for (std::size_t read = 0; read < kMaxHeader && std::getline(in, line); read += line.size() + 1) {
-        ++line_number;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        std::istringstream words(line);
-        std::string word, a, b;
-        words >> word;
-        if (word == "end_header") {
-            ended = true;
-            break;
-        }
-        if (word == "format") {
-            words >> a;
-            ascii = a == "ascii";
-        } else if (word == "element") {
-            needed += count * per_element;
-            unsigned long long n = 0;
-            words >> a >> n;
-            count = words ? double(n) : 0.0;
-            per_element = 0.0;
-        } else if (word == "property") {
-            words >> a;
-            const bool list = a == "list";
-            if (list) words >> a >> b;  // count type, item type
-            const std::size_t size = ply_type_size(a);
-            std::string name;
-            words >> name;
-            if (!words || size == 0 || (list && ply_type_size(b) == 0))
-                throw SceneError(path.string() + ":" + std::to_string(line_number) + ": cannot read mesh file: PLY property " +
-                                 "line '" + line + "' is malformed (expected 'property TYPE NAME' or 'property list " +
-                                 "COUNT_TYPE ITEM_TYPE NAME', types char uchar short ushort int uint float double or " +
-                                 "int8 uint8 int16 uint16 int32 uint32 float32 float64)");
-            per_element += ascii ? 2.0 : double(size);
-        }
-    }
-    if (!ended)
-        throw SceneError(path.string() + ": cannot read mesh file: the PLY header has no end_header line (expected one " +
-                         "within the first " + std::to_string(kMaxHeader >> 20) + " MB)");
-    needed += count * per_element;
-    const auto header_end = in.tellg();
-    in.seekg(0, std::ios::end);
-    const double data = double(in.tellg() - header_end);
-    if (needed > data)
-        throw SceneError(path.string() + ": cannot read mesh file: the PLY header declares elements that need at least " +
-                         std::to_string(static_cast<unsigned long long>(std::min(needed, 1e19))) + " bytes, but " +
-                         std::to_string(static_cast<long long>(data)) + " bytes follow it (truncated, or wrong counts)");
-}
-
 }  // namespace
 
 MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
@@ -337,8 +255,9 @@ MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
 MeshFile read_gltf_geometry(const gltf::Document& doc) {
     std::vector<std::string> warnings;
     const std::string glb = gltf::geometry_glb(doc, warnings);
-    probe_import([&](Assimp::Importer& importer) { importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb"); },
-                 doc.path.string() + ": cannot read the geometry");
+    probe_import(
+        [&](Assimp::Importer& importer) { importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb"); },
+        doc.path.string() + ": cannot read the geometry");
     Assimp::Importer importer;
     const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)

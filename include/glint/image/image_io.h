@@ -3,6 +3,7 @@
 
 #include "glint/image/image.h"
 
+#include <cstddef>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -24,7 +25,14 @@ enum class ColorEncoding {
     Data,
 };
 
-/// Read any format OpenImageIO knows into linear floats. Throws ImageError naming the file.
+/// Most values (pixels × channels) an image read as a texture or environment may hold:
+/// 2 GiB of floats, a 16384×8192 RGBA image (a "16K" HDR environment)...
+inline constexpr std::size_t kMaxImageValues = std::size_t(1) << 29;
+/// ...and its longest side, that of a 64K panorama.
+inline constexpr int kMaxImageSide = 65536;
+
+/// Read any format OpenImageIO knows into linear floats. Throws ImageError naming the file,
+/// also for an image of more than kMaxImageValues values.
 [[nodiscard]] Image read_image(const std::filesystem::path& path, ColorEncoding encoding = ColorEncoding::Color);
 
 /// Decode PNG/JPEG/... bytes held in memory (textures inside GLB or FBX files) with the same
