@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 using namespace glint;
@@ -124,6 +126,18 @@ TEST(OffsetRay, MovesToTheNormalSideAtEveryScale) {
         EXPECT_GT(dot(o - p, n), 0.0f) << "scale " << scale;
         // Small relative to the coordinates: a few thousand float ulps at most.
         EXPECT_LT(length(o - p), 1e-3f * std::max(1.0f, scale)) << "scale " << scale;
+    }
+}
+
+TEST(OffsetRay, ABrokenNormalMovesThePointAtMostALittle) {
+    // Degenerate input geometry gives NaN or infinite normals; the offset must stay a few
+    // hundred ulps (an unclamped conversion made it INT_MIN and flipped the sign of p).
+    const float inf = std::numeric_limits<float>::infinity();
+    const Vec3 p(1.5f, -2.0f, 300.0f);
+    const Vec3 o = offset_ray_origin(p, Vec3(std::numeric_limits<float>::quiet_NaN(), inf, -inf));
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_TRUE(std::isfinite(o[a])) << a;
+        EXPECT_LE(std::abs(o[a] - p[a]), 1e-3f * std::abs(p[a])) << a;
     }
 }
 

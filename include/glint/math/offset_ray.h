@@ -21,16 +21,14 @@ namespace glint {
     constexpr float kIntScale = 256.0f;
     Vec3 result;
     for (int a = 0; a < 3; ++a) {
-        if (std::abs(p[a]) < kOrigin) {
-            result[a] = p[a] + kFloatScale * n[a];
-            continue;
-        }
-        // A broken normal (NaN or infinite, from degenerate input geometry) must not make
-        // the float-to-int conversion undefined: no offset for NaN, a unit normal's at most.
-        const float scaled = kIntScale * n[a];
-        const auto offset = scaled == scaled ? static_cast<int32_t>(std::clamp(scaled, -kIntScale, kIntScale)) : 0;
-        const int32_t bits = std::bit_cast<int32_t>(p[a]);
-        result[a] = std::bit_cast<float>(bits + (p[a] < 0.0f ? -offset : offset));
+        // Clamped so that a broken normal (NaN or infinite, from degenerate input geometry)
+        // cannot make the float-to-int conversion undefined: max(-k, NaN) is -k. Branch-free,
+        // and the integer step is unsigned, as this runs for every secondary ray.
+        const float scaled = std::min(kIntScale, std::max(-kIntScale, kIntScale * n[a]));
+        const auto offset = static_cast<int32_t>(scaled);
+        const auto bits = std::bit_cast<uint32_t>(p[a]);
+        const float p_int = std::bit_cast<float>(bits + static_cast<uint32_t>(p[a] < 0.0f ? -offset : offset));
+        result[a] = std::abs(p[a]) < kOrigin ? p[a] + kFloatScale * n[a] : p_int;
     }
     return result;
 }
