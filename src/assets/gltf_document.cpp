@@ -187,7 +187,7 @@ std::vector<float> read_floats(const Document& doc, std::size_t index, int compo
     return out;
 }
 
-std::string json_error_text(const nlohmann::json::exception& error) {
+std::string json_error_text(const std::exception& error) {
     const std::string_view text = error.what();
     const std::size_t end_of_prefix = text.starts_with("[json.exception.") ? text.find("] ") : text.npos;
     return std::string(end_of_prefix == text.npos ? text : text.substr(end_of_prefix + 2));

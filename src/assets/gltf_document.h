@@ -97,9 +97,9 @@ template <class Integer>
     throw nlohmann::json::type_error::create(302, "expected " + expected + ", got " + got, &value);
 }
 
-/// nlohmann's message without its "[json.exception.type_error.302] " prefix, which names the
-/// library's internals rather than the file.
-[[nodiscard]] std::string json_error_text(const nlohmann::json::exception& error);
+/// An error's message, without the "[json.exception.type_error.302] " prefix of nlohmann's,
+/// which names the library's internals rather than the file.
+[[nodiscard]] std::string json_error_text(const std::exception& error);
 
 /// `object[key]` as integer(), `fallback` when the key is absent.
 template <class Integer>

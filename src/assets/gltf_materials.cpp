@@ -50,11 +50,9 @@ std::shared_ptr<const Image> MaterialConverter::image(int index) {
     try {
         const std::vector<unsigned char> bytes = image_bytes(doc_, index, name);
         result = std::make_shared<const Image>(decode_image(bytes, name));
-    } catch (const nlohmann::json::exception& e) {
+    } catch (const std::exception& e) {
         // A missing or broken texture costs the material its texture, not the render.
         notes_.ignored("texture image " + std::to_string(index) + " could not be read: " + json_error_text(e), "");
-    } catch (const std::exception& e) {
-        notes_.ignored("texture image " + std::to_string(index) + " could not be read: " + e.what(), "");
     }
     images_[index] = result;
     return result;

@@ -1,5 +1,7 @@
 #include "glint/image/image_io.h"
 
+#include "png_chunks.h"
+
 #include "glint/math/color.h"
 #include "glint/util/file_extension.h"
 #include "glint/util/move_into_place.h"
@@ -91,45 +93,17 @@ OIIO::ImageSpec straight_alpha_config() {
 
 }  // namespace
 
-/// libpng prints its own "libpng error: ..." line to stderr before OpenImageIO reports a
-/// truncated or malformed PNG, so a user's first line named no file. A PNG file's chunks are
-/// walked here first: each must fit in the file, IHDR must have a size libpng accepts (1 to
-/// 10⁶ pixels a side, its default limit), and IEND must be reached.
-void check_png_chunks(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    unsigned char head[8] = {};
-    if (!in.read(reinterpret_cast<char*>(head), 8) || std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) != 0) return;
-    in.seekg(0, std::ios::end);
-    const auto size = static_cast<uint64_t>(in.tellg());
-    auto fail = [&](const std::string& what) { throw ImageError(path.string() + ": cannot read image: " + what); };
-    for (uint64_t offset = 8, chunk = 0;; ++chunk) {
-        unsigned char h[16] = {};
-        in.seekg(std::streamoff(offset));
-        if (offset + 12 > size || !in.read(reinterpret_cast<char*>(h), offset + 16 <= size ? 16 : 8))
-            fail("truncated PNG (the file ends after " + std::to_string(size) + " bytes, before its IEND chunk)");
-        auto be32 = [](const unsigned char* b) {
-            return uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | b[3];
-        };
-        const uint64_t length = be32(h);
-        const std::string type(reinterpret_cast<const char*>(h + 4), 4);
-        if (offset + 12 + length > size)
-            fail("truncated PNG (chunk " + type + " of " + std::to_string(length) +
-                 " bytes runs past the end of the file)");
-        if (chunk == 0 && type != "IHDR") fail("malformed PNG (the first chunk is not IHDR)");
-        if (type == "IHDR") {
-            const uint32_t width = be32(h + 8), height = offset + 16 <= size ? be32(h + 12) : 0;
-            if (length < 13 || width == 0 || height == 0 || width > 1000000 || height > 1000000)
-                fail("PNG header gives " + std::to_string(width) + "×" + std::to_string(height) +
-                     " pixels (expected 1 to 1000000 a side)");
-        }
-        if (type == "IEND") return;
-        offset += 12 + length;
-    }
-}
-
 Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     if (!std::filesystem::exists(path)) throw ImageError(path.string() + ": no such image file");
-    check_png_chunks(path);
+    std::ifstream file(path, std::ios::binary);
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(path, ec);  // 0 for a folder: not a PNG
+    check_png_chunks(
+        size,
+        [&](uint64_t offset, unsigned char* out, std::size_t n) {
+            return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
+        },
+        path.string());
     const OIIO::ImageSpec config = straight_alpha_config();
     auto input = OIIO::ImageInput::open(path.string(), &config);
     if (!input) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
@@ -138,6 +112,14 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
 
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, ColorEncoding encoding) {
     if (bytes.empty()) throw ImageError(name + ": empty image data");
+    check_png_chunks(
+        bytes.size(),
+        [&](uint64_t offset, unsigned char* out, std::size_t n) {
+            if (offset > bytes.size() || n > bytes.size() - offset) return false;
+            std::memcpy(out, bytes.data() + offset, n);
+            return true;
+        },
+        name);
     // OpenImageIO picks the reader from the name's extension and falls back to sniffing the
     // bytes. In 2.4 a reader opened with a config spec takes the proxy from the spec's
     // "oiio:ioproxy" attribute (a pointer to the pointer), not only from the argument.
