@@ -73,6 +73,10 @@ std::vector<unsigned char> read_uri(const std::filesystem::path& gltf, const std
             decoded += uri[i];
         }
     }
+    // The operating system would read "a%00b.bin" as "a", a different file.
+    if (decoded.find('\0') != std::string::npos)
+        fail(gltf, std::string(what) + " " + std::to_string(index) + " '" + uri +
+                       "': %00 in a file name (expected a relative path without NUL characters)");
     const std::filesystem::path file = gltf.parent_path() / decoded;
     std::error_code ec;  // a folder "exists" too, and reading one throws a message that names no file
     if (!std::filesystem::is_regular_file(file, ec))

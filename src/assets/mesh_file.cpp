@@ -13,7 +13,9 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <cctype>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <set>
 
@@ -236,6 +238,27 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, Con
     return file;
 }
 
+/// assimp reads an OBJ whose `mtllib` file is missing without a word, and draws its
+/// materials in a default grey; one warning per missing library says why.
+std::vector<std::string> missing_material_libraries(const std::filesystem::path& obj) {
+    std::vector<std::string> warnings;
+    std::ifstream in(obj, std::ios::binary);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("mtllib", 0) != 0 || line.size() < 7 || !std::isspace(static_cast<unsigned char>(line[6])))
+            continue;
+        // assimp takes the rest of the line as one name, as here.
+        const auto first = line.find_first_not_of(" \t", 7), last = line.find_last_not_of(" \t\r");
+        if (first == std::string::npos) continue;
+        const std::string name = line.substr(first, last - first + 1);
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(obj.parent_path() / name, ec))
+            warnings.push_back(obj.string() + ": material library '" + name +
+                               "' not found beside it; its materials are drawn in assimp's default grey");
+    }
+    return warnings;
+}
+
 }  // namespace
 
 MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
@@ -249,7 +272,12 @@ MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
         throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
     const bool lenient = mode == ReadMode::Lenient;
-    return convert_scene(ai, path, {.mode = mode, .materials = lenient, .smooth_missing_normals = lenient});
+    MeshFile file = convert_scene(ai, path, {.mode = mode, .materials = lenient, .smooth_missing_normals = lenient});
+    if (lenient && lower_case_extension(path) == ".obj") {
+        const std::vector<std::string> missing = missing_material_libraries(path);
+        file.warnings.insert(file.warnings.end(), missing.begin(), missing.end());
+    }
+    return file;
 }
 
 MeshFile read_gltf_geometry(const gltf::Document& doc) {
