@@ -53,10 +53,11 @@ void ScratchFolder::link(std::string_view name, const std::filesystem::path& tar
 }
 
 void load_and_render(const std::filesystem::path& scene_file) {
-    // No worker threads: every assimp import forks (src/assets/import_probe.h), and clang 14's
-    // ASan allocator is not fork-safe; a TBB worker freeing memory as the next input forks
-    // left the child waiting on that allocator's lock forever (timeouts in fuzz_ply).
-    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    // No worker threads, ever: every assimp import forks (src/assets/import_probe.h), and
+    // clang 14's ASan allocator is not fork-safe; a TBB worker freeing memory as the next
+    // input forked left the child waiting on that allocator's lock forever (timeouts in
+    // fuzz_ply and fuzz_obj_mtl). Static, so that no worker starts between inputs either.
+    static const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     LoadedScene loaded;
     try {
         loaded = std::move(load_scene_file(scene_file).loaded);
