@@ -12,6 +12,9 @@
 #include <cstdio>
 #include <cstring>
 
+// Present only in sanitizer builds (weak, so null otherwise).
+extern "C" void __sanitizer_set_death_callback(void (*callback)()) __attribute__((weak));
+
 namespace glint {
 
 namespace {
@@ -26,6 +29,9 @@ constexpr std::size_t kMaxChildMessage = 4096;
     // not through the parent's Ctrl-C handler (the parent decides about interruptions).
     for (int signal : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGPIPE}) std::signal(signal, SIG_DFL);
     for (int signal : {SIGINT, SIGTERM}) std::signal(signal, SIG_IGN);
+    // Nor through a sanitizer's death callbacks: libFuzzer's would record the input as a
+    // crash of its own when assimp corrupts memory here, which is contained.
+    if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
     // ...but it must not outlive the parent: a second Ctrl-C, a timeout or a kill ends both.
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(1);  // the parent died before prctl took effect
