@@ -48,6 +48,9 @@ int main(int argc, char** argv) {
                          "Continue an interrupted render from the checkpoint beside the output (<output>.checkpoint)");
     render_cmd->add_option("--checkpoint-every", render.checkpoint_every,
                            "Save a checkpoint beside the output every SECONDS while rendering");
+    render_cmd->add_option("--display-server", render.display_server,
+                           "Show the image as it renders in an HDR viewer speaking tev's protocol, at HOST:PORT "
+                           "(tev listens on 127.0.0.1:14158)");
     render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors: no progress bar, warnings or summary");
     glint::app::add_scene_options(render_cmd, render.scene);
 

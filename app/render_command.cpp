@@ -9,6 +9,7 @@
 #include "glint/integrators/checkpoint.h"
 #include "glint/integrators/integrator_registry.h"
 #include "glint/integrators/render_settings.h"
+#include "glint/io/film_stream.h"
 #include "glint/scene/render_scene.h"
 #include "glint/util/file_extension.h"
 
@@ -88,6 +89,23 @@ void check_memory(const glint::RenderSettings& s) {
                         s.width, s.height, needed / 1e9, available / 1e9));
 }
 
+/// The --display-server address, checked like every option before anything is loaded.
+std::optional<glint::DisplayAddress> display_address(const RenderOptions& opt) {
+    if (!opt.display_server) return std::nullopt;
+    try {
+        return glint::parse_display_address(*opt.display_server);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--display-server: ") + e.what());
+    }
+}
+
+/// Stopped while loading or building, before a pixel was rendered: an empty image would only
+/// replace what the output (or a checkpoint to resume) held before.
+int stopped_before_rendering(const InterruptGuard& interrupt) {
+    fmt::print(stderr, "interrupted while loading: nothing was rendered, nothing written\n");
+    return 128 + interrupt.signal();
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& opt) {
@@ -99,6 +117,7 @@ int run_render(const RenderOptions& opt) {
         output =
             opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
     glint::check_output_path(output);
+    const std::optional<glint::DisplayAddress> display = display_address(opt);
     // From here on a first Ctrl-C is a request to stop, never a kill that loses the image.
     const std::filesystem::path checkpoint = glint::checkpoint_path_for(output);
     const InterruptGuard interrupt(glint::temporary_path_for(output), glint::temporary_checkpoint_path(checkpoint));
@@ -115,16 +134,12 @@ int run_render(const RenderOptions& opt) {
     apply_overrides(opt, s);
     check_memory(s);
     const double load_seconds = seconds_since(load_start);
+    if (interrupt.stop()) return stopped_before_rendering(interrupt);
 
     const auto build_start = Clock::now();
     const glint::RenderScene scene(std::move(loaded.scene));
     const double build_seconds = seconds_since(build_start);
-    if (interrupt.stop()) {
-        // Stopped before a pixel was rendered: an empty image would only replace what the
-        // output (or a checkpoint to resume) held before.
-        fmt::print(stderr, "interrupted while loading: nothing was rendered, nothing written\n");
-        return 128 + interrupt.signal();
-    }
+    if (interrupt.stop()) return stopped_before_rendering(interrupt);
 
     glint::Film film(s.width, s.height);
     glint::TileGrid tiles(s.width, s.height);
@@ -159,6 +174,8 @@ int run_render(const RenderOptions& opt) {
         last_checkpoint = Clock::now();
     };
 
+    std::optional<glint::FilmStream> stream;
+    if (display) stream.emplace(*display, output, film, tiles, warn);
     ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
     const glint::RenderStats stats = integrator->render(
         scene, s, film,
@@ -168,6 +185,7 @@ int run_render(const RenderOptions& opt) {
         },
         &interrupt.stop(), &tiles);
     bar.finish();
+    if (stream) stream->finish();
 
     glint::WriteOptions write_options;
     write_options.exposure = opt.exposure;

@@ -25,6 +25,8 @@ struct RenderOptions {
     bool resume = false;
     /// Save a checkpoint this often while rendering (seconds; none when unset).
     std::optional<double> checkpoint_every;
+    /// Stream the image as it renders to a display server such as tev ("HOST:PORT").
+    std::optional<std::string> display_server;
 };
 
 /// Run `glint render`; returns the exit status (0, or 128 + the signal that interrupted it).

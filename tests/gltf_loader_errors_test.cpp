@@ -2,6 +2,7 @@
 // warning that names the file and the problem, the CLI exits non-zero only when nothing can
 // be rendered, and nothing crashes (CI runs this under AddressSanitizer).
 
+#include "cli_runner.h"
 #include "gltf_test_files.h"
 
 #include "glint/diagnostics.h"
@@ -11,10 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <limits>
-#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -37,17 +36,8 @@ bool has_warning(const std::vector<std::string>& warnings, const std::string& a,
     return false;
 }
 
-struct CliResult {
-    int exit_code = -1;
-    std::string err;
-    std::string out;
-};
-
-CliResult run_cli(const std::string& args, const fs::path& dir) {
-    const fs::path err = dir / "stderr.txt", out = dir / "stdout.txt";
-    const std::string cmd = std::string(GLINT_CLI) + " " + args + " > " + out.string() + " 2> " + err.string();
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, glint_test::read_file(err), glint_test::read_file(out)};
+glint_test::CliResult run_cli(const std::string& args, const fs::path& dir) {
+    return glint_test::run_cli(GLINT_CLI, args, dir);
 }
 
 TEST(GltfErrors, TruncatedGlbNamesTheFile) {
@@ -70,7 +60,7 @@ TEST(GltfErrors, TruncatedSampleGlbFailsCleanlyInTheCli) {
     const fs::path dir = glint_test::temp_dir();
     const std::string bytes = glint_test::read_file(duck);
     glint_test::write_file(dir / "Duck.glb", bytes.substr(0, bytes.size() / 2));
-    const CliResult r = run_cli("render " + (dir / "Duck.glb").string() + " -q -o " + (dir / "x.png").string(), dir);
+    const glint_test::CliResult r = run_cli("render " + (dir / "Duck.glb").string() + " -q -o " + (dir / "x.png").string(), dir);
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("Duck.glb"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
@@ -85,7 +75,7 @@ TEST(GltfErrors, MissingBinNamesTheBuffer) {
     EXPECT_NE(error.find("quad.gltf"), std::string::npos) << error;
     EXPECT_NE(error.find("quad.bin"), std::string::npos) << error;
     EXPECT_NE(error.find("missing"), std::string::npos) << error;
-    const CliResult r = run_cli("render " + path.string() + " -q -o " + (dir / "x.png").string(), dir);
+    const glint_test::CliResult r = run_cli("render " + path.string() + " -q -o " + (dir / "x.png").string(), dir);
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("quad.bin"), std::string::npos) << r.err;
 }
@@ -107,7 +97,7 @@ TEST(GltfErrors, MissingTextureWarnsAndRenders) {
     const glint::GltfScene s = glint::load_gltf_scene(path);
     EXPECT_TRUE(has_warning(s.loaded.warnings, "quad.gltf", "gone.png"));
     EXPECT_EQ(s.loaded.scene.materials()[0].texture, nullptr);
-    const CliResult r = run_cli("render " + path.string() + " --width 8 --height 6 -o " + (dir / "x.png").string(), dir);
+    const glint_test::CliResult r = run_cli("render " + path.string() + " --width 8 --height 6 -o " + (dir / "x.png").string(), dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("gone.png"), std::string::npos) << r.err;
     EXPECT_TRUE(fs::exists(dir / "x.png"));
@@ -137,7 +127,7 @@ TEST(GltfErrors, InfoListsWhatWasMappedAndIgnored) {
     json j = glint_test::quad_json("quad.bin");
     j["extensionsUsed"] = {"EXT_glint_unknown"};
     const fs::path path = glint_test::write_gltf(dir, "quad", j);
-    const CliResult r = run_cli("info " + path.string(), dir);
+    const glint_test::CliResult r = run_cli("info " + path.string(), dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     for (const char* expected : {"triangles:   2 unique, 2 instanced", "materials:   1", "cameras:     0 in the file",
                                  "bounds:", "memory:", "mapped:", "automatic camera", "ignored:", "EXT_glint_unknown"})

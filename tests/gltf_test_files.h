@@ -2,7 +2,8 @@
 // Small glTF files written by tests: a 20×20 quad in the y = 0 plane facing +y, with
 // whatever lights, cameras and materials a test adds to the JSON.
 
-#include <gtest/gtest.h>
+#include "test_files.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -12,30 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 namespace glint_test {
-
-/// A fresh empty directory under the system temp dir, unique per test.
-inline std::filesystem::path temp_dir() {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    // The process id keeps two runs of the suite at once (two checkouts, a CI job and a
-    // developer) out of each other's files.
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("glint_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-inline void write_file(const std::filesystem::path& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-}
-
-inline std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 /// The quad's JSON (one node "quad", mesh 0, material 0 white Lambertian) and its buffer.
 inline nlohmann::json quad_json(const std::string& bin_name) {
@@ -53,7 +31,8 @@ inline nlohmann::json quad_json(const std::string& bin_name) {
         {"bufferView": 1, "componentType": 5125, "count": 6, "type": "SCALAR"}],
       "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
                       {"buffer": 0, "byteOffset": 48, "byteLength": 24}],
-      "buffers": [{"uri": ")" + bin_name + R"(", "byteLength": 72}]
+      "buffers": [{"uri": ")" + bin_name +
+                                 R"(", "byteLength": 72}]
     })");
 }
 
