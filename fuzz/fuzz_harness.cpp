@@ -53,7 +53,7 @@ void ScratchFolder::link(std::string_view name, const std::filesystem::path& tar
 }
 
 void load_and_render(const std::filesystem::path& scene_file) {
-    // No worker threads, ever: every assimp import forks (src/assets/import_probe.h), and
+    // No worker threads, ever: every assimp import forks (src/assets/isolated_import.h), and
     // clang 14's ASan allocator is not fork-safe; a TBB worker freeing memory as the next
     // input forked left the child waiting on that allocator's lock forever (timeouts in
     // fuzz_ply and fuzz_obj_mtl). Static, so that no worker starts between inputs either.

@@ -1,7 +1,8 @@
 #include "mesh_file.h"
 
 #include "gltf_geometry.h"
-#include "import_probe.h"
+#include "isolated_import.h"
+#include "mesh_file_bytes.h"
 #include "name_list.h"
 #include "ply_header.h"
 
@@ -12,6 +13,7 @@
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <cctype>
 #include <cmath>
@@ -264,15 +266,20 @@ std::vector<std::string> missing_material_libraries(const std::filesystem::path&
 MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
     if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
     check_ply_header(path);
-    const unsigned flags = mode == ReadMode::Strict ? kStrictFlags : kImportFlags;
-    probe_import([&](Assimp::Importer& importer) { importer.ReadFile(path.string(), flags); },
-                 path.string() + ": cannot read mesh file");
-    Assimp::Importer importer;
-    const aiScene* ai = importer.ReadFile(path.string(), flags);
-    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneError(path.string() + ": cannot read mesh file: " + importer.GetErrorString());
     const bool lenient = mode == ReadMode::Lenient;
-    MeshFile file = convert_scene(ai, path, {.mode = mode, .materials = lenient, .smooth_missing_normals = lenient});
+    const std::string context = path.string() + ": cannot read mesh file";
+    const std::string bytes = run_isolated(
+        [&] {
+            Assimp::Importer importer;
+            const aiScene* ai =
+                importer.ReadFile(path.string(), mode == ReadMode::Strict ? kStrictFlags : kImportFlags);
+            if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+                throw SceneError(context + ": " + importer.GetErrorString());
+            return to_bytes(
+                convert_scene(ai, path, {.mode = mode, .materials = lenient, .smooth_missing_normals = lenient}));
+        },
+        context);
+    MeshFile file = mesh_file_from_bytes(bytes, path.string());
     if (lenient && lower_case_extension(path) == ".obj") {
         const std::vector<std::string> missing = missing_material_libraries(path);
         file.warnings.insert(file.warnings.end(), missing.begin(), missing.end());
@@ -283,14 +290,17 @@ MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
 MeshFile read_gltf_geometry(const gltf::Document& doc) {
     std::vector<std::string> warnings;
     const std::string glb = gltf::geometry_glb(doc, warnings);
-    probe_import(
-        [&](Assimp::Importer& importer) { importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb"); },
-        doc.path.string() + ": cannot read the geometry");
-    Assimp::Importer importer;
-    const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
-    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneError(doc.path.string() + ": cannot read the geometry: " + importer.GetErrorString());
-    MeshFile file = convert_scene(ai, doc.path, {.materials = false, .smooth_missing_normals = false});
+    const std::string context = doc.path.string() + ": cannot read the geometry";
+    const std::string bytes = run_isolated(
+        [&] {
+            Assimp::Importer importer;
+            const aiScene* ai = importer.ReadFileFromMemory(glb.data(), glb.size(), kImportFlags, "glb");
+            if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+                throw SceneError(context + ": " + importer.GetErrorString());
+            return to_bytes(convert_scene(ai, doc.path, {.materials = false, .smooth_missing_normals = false}));
+        },
+        context);
+    MeshFile file = mesh_file_from_bytes(bytes, doc.path.string());
     file.warnings.insert(file.warnings.begin(), warnings.begin(), warnings.end());
     // assimp numbers meshes primitive by primitive; the materials come from the JSON.
     std::vector<uint32_t> materials = gltf::primitive_materials(doc);

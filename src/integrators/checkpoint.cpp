@@ -1,6 +1,7 @@
 #include "glint/integrators/checkpoint.h"
 
 #include "glint/image/filter.h"
+#include "glint/util/byte_stream.h"
 #include "glint/util/move_into_place.h"
 
 #include <fmt/format.h>
@@ -29,54 +30,6 @@ uint64_t fnv1a(const std::string& bytes) {
     for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
     return h;
 }
-
-class Writer {
-public:
-    void u32(uint32_t v) { raw(&v, sizeof v); }
-    void text(const std::string& s) {
-        u32(uint32_t(s.size()));
-        raw(s.data(), s.size());
-    }
-    void raw(const void* data, std::size_t size) {
-        const auto* p = static_cast<const char*>(data);
-        bytes.insert(bytes.end(), p, p + size);
-    }
-    std::string bytes;
-};
-
-class Reader {
-public:
-    Reader(const std::filesystem::path& path, std::string_view bytes) : path_(path), bytes_(bytes) {}
-    uint32_t u32() {
-        uint32_t v;
-        raw(&v, sizeof v);
-        return v;
-    }
-    std::string text() {
-        const uint32_t n = u32();
-        need(n);
-        std::string s(bytes_.substr(at_, n));
-        at_ += n;
-        return s;
-    }
-    void raw(void* out, std::size_t size) {
-        need(size);
-        std::memcpy(out, bytes_.data() + at_, size);
-        at_ += size;
-    }
-    [[nodiscard]] bool at_end() const { return at_ == bytes_.size(); }
-    [[noreturn]] void corrupt() const {
-        throw CheckpointError(path_.string() + ": not a Glint checkpoint, or cut short (delete it to start over)");
-    }
-
-private:
-    void need(std::size_t n) const {
-        if (bytes_.size() - at_ < n) corrupt();
-    }
-    std::filesystem::path path_;
-    std::string_view bytes_;
-    std::size_t at_ = 0;
-};
 
 std::string read_file(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -121,7 +74,7 @@ std::filesystem::path temporary_checkpoint_path(const std::filesystem::path& pat
 
 void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint& fingerprint, const Film& film,
                       const TileGrid& tiles) {
-    Writer w;
+    ByteWriter w;
     w.raw(kMagic, sizeof kMagic);
     w.u32(kVersion);
     w.u32(uint32_t(fingerprint.size()));
@@ -146,7 +99,7 @@ void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint
     const std::filesystem::path tmp = temporary_checkpoint_path(path);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out.write(w.bytes.data(), std::streamsize(w.bytes.size()));
+        out.write(w.bytes().data(), std::streamsize(w.bytes().size()));
         if (!out.flush()) {
             std::error_code ec;
             std::filesystem::remove(tmp, ec);
@@ -157,50 +110,73 @@ void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint
         throw CheckpointError(path.string() + ": cannot move the checkpoint into place: " + reason);
 }
 
-void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film,
-                     TileGrid& tiles) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw CheckpointError(path.string() + ": no checkpoint to resume (an interrupted render leaves one beside "
-                              "its image)");
-    const std::string bytes = read_file(path);
-    Reader r(path, bytes);
+namespace {
+
+/// A record that cannot be a checkpoint's; read_checkpoint() words it.
+[[noreturn]] void malformed() { throw ByteStreamError("malformed"); }
+
+/// The fingerprint saved in a checkpoint, after its magic and version.
+RenderFingerprint read_fingerprint(ByteReader& r) {
     char magic[sizeof kMagic];
     r.raw(magic, sizeof magic);
-    if (std::memcmp(magic, kMagic, sizeof kMagic) != 0 || r.u32() != kVersion) r.corrupt();
-    RenderFingerprint saved(r.u32());
-    if (saved.size() > 1024) r.corrupt();
+    if (std::memcmp(magic, kMagic, sizeof kMagic) != 0 || r.u32() != kVersion) malformed();
+    const uint32_t items = r.u32();
+    if (items > 1024) malformed();
+    RenderFingerprint saved(items);
     for (auto& [name, value] : saved) {
         name = r.text();
         value = r.text();
     }
-    if (saved != expected) {
-        std::string differences;
-        for (const auto& [name, value] : expected) {
-            std::string theirs = "nothing";
-            for (const auto& [saved_name, saved_value] : saved)
-                if (saved_name == name) theirs = saved_value;
-            if (theirs != value)
-                differences += fmt::format("{}{}: the checkpoint has {}, this render {}", differences.empty() ? "" : "; ",
-                                           name, theirs, value);
+    return saved;
+}
+
+/// "name: the checkpoint has A, this render B; ..." for each item that differs.
+std::string fingerprint_differences(const RenderFingerprint& saved, const RenderFingerprint& expected) {
+    std::string differences;
+    for (const auto& [name, value] : expected) {
+        std::string theirs = "nothing";
+        for (const auto& [saved_name, saved_value] : saved)
+            if (saved_name == name) theirs = saved_value;
+        if (theirs != value)
+            differences += fmt::format("{}{}: the checkpoint has {}, this render {}", differences.empty() ? "" : "; ",
+                                       name, theirs, value);
+    }
+    return differences.empty() ? std::string("its description differs") : differences;
+}
+
+}  // namespace
+
+void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film,
+                     TileGrid& tiles) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw CheckpointError(path.string() +
+                              ": no checkpoint to resume (an interrupted render leaves one beside "
+                              "its image)");
+    const std::string bytes = read_file(path);
+    try {
+        ByteReader r(bytes);
+        const RenderFingerprint saved = read_fingerprint(r);
+        if (saved != expected)
+            throw CheckpointError(path.string() + ": made by another render (" +
+                                  fingerprint_differences(saved, expected) +
+                                  "); delete it or render with the settings it was made with");
+        if (r.u32() != film.width() || r.u32() != film.height() || r.u32() != tiles.count()) malformed();
+        std::string done(tiles.count(), '\0');
+        r.raw(done.data(), done.size());
+        const std::span<FilmPixel> pixels = film.pixels();
+        for (uint32_t t = 0; t < tiles.count(); ++t) {
+            if (done[t] == 0) continue;
+            if (done[t] != 1) malformed();
+            const auto [x0, y0, x1, y1] = tiles.bounds(t);
+            for (uint32_t y = y0; y < y1; ++y)
+                r.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
+            tiles.mark_done(t);
         }
-        throw CheckpointError(path.string() + ": made by another render (" +
-                              (differences.empty() ? std::string("its description differs") : differences) +
-                              "); delete it or render with the settings it was made with");
+        if (!r.at_end()) malformed();
+    } catch (const ByteStreamError&) {
+        throw CheckpointError(path.string() + ": not a Glint checkpoint, or cut short (delete it to start over)");
     }
-    if (r.u32() != film.width() || r.u32() != film.height() || r.u32() != tiles.count()) r.corrupt();
-    std::string done(tiles.count(), '\0');
-    r.raw(done.data(), done.size());
-    const std::span<FilmPixel> pixels = film.pixels();
-    for (uint32_t t = 0; t < tiles.count(); ++t) {
-        if (done[t] == 0) continue;
-        if (done[t] != 1) r.corrupt();
-        const auto [x0, y0, x1, y1] = tiles.bounds(t);
-        for (uint32_t y = y0; y < y1; ++y)
-            r.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
-        tiles.mark_done(t);
-    }
-    if (!r.at_end()) r.corrupt();
 }
 
 }  // namespace glint
