@@ -2,6 +2,7 @@
 
 #include "interrupt.h"
 #include "progress_bar.h"
+#include "render_overrides.h"
 #include "timing.h"
 
 #include "glint/image/filter.h"
@@ -23,57 +24,6 @@
 namespace glint::app {
 
 namespace {
-
-/// `value` of option `name` if it lies in [lo, hi]; otherwise throws "name: expected ...; got value".
-uint32_t in_range(std::string_view name, int64_t value, int64_t lo, int64_t hi, std::string_view expected = {}) {
-    if (value < lo || value > hi)
-        throw std::invalid_argument(fmt::format(
-            "{}: expected {}; got {}", name,
-            expected.empty() ? fmt::format("an integer from {} to {}", lo, hi) : std::string(expected), value));
-    return static_cast<uint32_t>(value);
-}
-
-/// The command line's overrides, checked before anything is loaded.
-void apply_overrides(const RenderOptions& opt, glint::RenderSettings& s) {
-    using Limits = glint::SettingLimits;
-    if (opt.width) s.width = in_range("--width", *opt.width, 1, Limits::kMaxImageSide);
-    if (opt.height) s.height = in_range("--height", *opt.height, 1, Limits::kMaxImageSide);
-    if (opt.spp) {
-        const std::string expected =
-            fmt::format("a square number 1, 4, 9, ... up to {} (N×N stratified samples)", Limits::kMaxSpp);
-        const std::optional<uint32_t> n =
-            glint::samples_per_axis(in_range("--spp", *opt.spp, 1, Limits::kMaxSpp, expected));
-        if (!n) throw std::invalid_argument(fmt::format("--spp: expected {}; got {}", expected, *opt.spp));
-        s.samples_per_axis = *n;
-    }
-    if (opt.depth) s.max_depth = in_range("--depth", *opt.depth, 0, Limits::kMaxDepth);
-    if (opt.threads)
-        s.threads = in_range("--threads", *opt.threads, 0, Limits::kMaxThreads,
-                             fmt::format("0 (all cores) or a thread count up to {}", Limits::kMaxThreads));
-    if (opt.seed) {
-        if (*opt.seed < 0)
-            throw std::invalid_argument(fmt::format("--seed: expected a non-negative integer; got {}", *opt.seed));
-        s.seed = static_cast<uint64_t>(*opt.seed);
-    }
-    if (opt.filter) {
-        s.filter = *glint::filter_from_name(*opt.filter);  // CLI11 checked the name
-        s.filter_radius = 0.0f;                            // a filter named here takes its own default radius
-    }
-    if (opt.filter_radius) {
-        if (!(*opt.filter_radius > 0.0 && *opt.filter_radius <= Limits::kMaxFilterRadius))
-            throw std::invalid_argument(
-                fmt::format("--filter-radius: expected a radius in pixels above 0 and at most {}; got {}",
-                            Limits::kMaxFilterRadius, *opt.filter_radius));
-        s.filter_radius = static_cast<float>(*opt.filter_radius);
-    }
-    if (opt.integrator) s.integrator = *opt.integrator;
-    if (opt.light_samples)
-        s.light_samples = in_range("--light-samples", *opt.light_samples, 1, Limits::kMaxLightSamples);
-    if (opt.mis) s.mis = *opt.mis == "balance" ? glint::MisHeuristic::Balance : glint::MisHeuristic::Power;
-    if (opt.checkpoint_every && !(*opt.checkpoint_every > 0.0))
-        throw std::invalid_argument(
-            fmt::format("--checkpoint-every: expected a positive number of seconds; got {}", *opt.checkpoint_every));
-}
 
 /// Refuse an image whose film and output copies would not fit in the machine's memory,
 /// before allocating any of it.
@@ -111,7 +61,10 @@ int stopped_before_rendering(const InterruptGuard& interrupt) {
 int run_render(const RenderOptions& opt) {
     // Every mistake on the command line is reported before the scene is loaded.
     glint::RenderSettings checked;
-    apply_overrides(opt, checked);
+    apply_overrides(opt.overrides, checked);
+    if (opt.checkpoint_every && !(*opt.checkpoint_every > 0.0))
+        throw std::invalid_argument(
+            fmt::format("--checkpoint-every: expected a positive number of seconds; got {}", *opt.checkpoint_every));
     std::string output = opt.output;
     if (output.empty())
         output =
@@ -131,7 +84,7 @@ int run_render(const RenderOptions& opt) {
     for (const std::string& w : loaded.warnings) warn(w);
 
     glint::RenderSettings& s = loaded.settings;
-    apply_overrides(opt, s);
+    apply_overrides(opt.overrides, s);
     check_memory(s);
     const double load_seconds = seconds_since(load_start);
     if (interrupt.stop()) return stopped_before_rendering(interrupt);

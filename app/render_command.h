@@ -2,6 +2,7 @@
 // `glint render`: its options, checked against the limits scene files have, and the render
 // itself: load, prepare, render (interruptible, resumable), write.
 
+#include "render_overrides.h"
 #include "scene_source.h"
 
 #include <cstdint>
@@ -14,11 +15,7 @@ struct RenderOptions {
     std::string scene_path;
     SceneOptions scene;
     std::string output;
-    // Numbers are read signed and wide, then checked against the limits scene files have,
-    // so that "-4" or "100000" gets a message in words rather than a conversion error.
-    std::optional<int64_t> width, height, spp, depth, threads, seed, light_samples;
-    std::optional<std::string> filter, integrator, mis;
-    std::optional<double> filter_radius;
+    RenderOverrides overrides;
     float exposure = 0.0f;
     bool quiet = false;
     /// Continue from the checkpoint beside the output (`<output>.checkpoint`).

@@ -12,10 +12,53 @@
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
+#include <string>
 
 namespace glint {
 
 uint32_t max_render_threads() { return static_cast<uint32_t>(tbb::info::default_concurrency()); }
+
+ExplainedSample Integrator::take_sample(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y,
+                                        uint32_t index, uint32_t width, uint32_t height, TraceContext& context) const {
+    context.sampler.start_pixel_sample(uint64_t(y) * width + x, index);
+    const FilterSample fs = filter.sample(context.sampler.pixel_2d());
+    ExplainedSample sample;
+    sample.index = index;
+    sample.film_position = Vec2((float(x) + 0.5f) + fs.offset.x, (float(y) + 0.5f) + fs.offset.y);
+    sample.filter_weight = fs.weight;
+    const Ray ray =
+        scene.camera().generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height));
+    sample.radiance = Li(scene, ray, context);
+    return sample;
+}
+
+PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSettings& settings, uint32_t x, uint32_t y,
+                                     std::optional<uint32_t> sample) const {
+    const uint32_t n = settings.samples_per_axis;
+    if (n == 0) throw std::invalid_argument("samples per axis must be at least 1");
+    if (x >= settings.width || y >= settings.height)
+        throw std::out_of_range("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                                std::to_string(settings.width) + "×" + std::to_string(settings.height) + " image");
+    if (sample && *sample >= n * n)
+        throw std::out_of_range("sample " + std::to_string(*sample) + " does not exist: a pixel has " +
+                                std::to_string(n * n) + " samples, 0 to " + std::to_string(n * n - 1));
+    const Filter filter(settings.filter, settings.filter_radius);
+    Sampler sampler(settings.seed, n);
+    PixelExplanation explanation{.x = x, .y = y, .samples = {}, .value = {}};
+    // A film of one pixel accumulates exactly as the render's film does at (x, y).
+    Film pixel(1, 1);
+    for (uint32_t index = 0; index < n * n; ++index) {
+        RayTree tree;
+        const bool recorded = !sample || *sample == index;
+        TraceContext context{.sampler = sampler, .rays = 0, .tree = recorded ? &tree : nullptr};
+        ExplainedSample s = take_sample(scene, filter, x, y, index, settings.width, settings.height, context);
+        if (recorded) s.tree = std::move(tree);
+        pixel.add_sample(0, 0, s.radiance, s.filter_weight);
+        explanation.samples.push_back(std::move(s));
+    }
+    explanation.value = pixel.at(0, 0);
+    return explanation;
+}
 
 RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                                const ProgressCallback& progress, const std::atomic<bool>* stop, TileGrid* tiles) const {
@@ -25,7 +68,8 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
     const uint32_t width = film.width(), height = film.height();
     TileGrid own_tiles(width, height);
     TileGrid& grid = tiles ? *tiles : own_tiles;
-    if (grid.width() != width || grid.height() != height) throw std::invalid_argument("tile grid and film differ in size");
+    if (grid.width() != width || grid.height() != height)
+        throw std::invalid_argument("tile grid and film differ in size");
     const uint32_t tile_count = grid.count();
     const uint32_t n = settings.samples_per_axis;
     std::atomic<uint64_t> rays{0};
@@ -39,12 +83,8 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
         for (uint32_t y = y0; y < y1; ++y)
             for (uint32_t x = x0; x < x1; ++x)
                 for (uint32_t index = 0; index < n * n; ++index) {
-                    sampler.start_pixel_sample(uint64_t(y) * width + x, index);
-                    const FilterSample fs = filter.sample(sampler.pixel_2d());
-                    const float fx = (float(x) + 0.5f) + fs.offset.x;
-                    const float fy = (float(y) + 0.5f) + fs.offset.y;
-                    const Ray ray = scene.camera().generate_ray(fx, fy, int(width), int(height));
-                    film.add_sample(x, y, Li(scene, ray, context), fs.weight);
+                    const ExplainedSample sample = take_sample(scene, filter, x, y, index, width, height, context);
+                    film.add_sample(x, y, sample.radiance, sample.filter_weight);
                 }
         rays += context.rays;
         grid.mark_done(tile);

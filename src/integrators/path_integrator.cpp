@@ -49,13 +49,20 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
     float bsdf_pdf = 0.0f;
     Vec3 previous_point;
 
+    // The ray of the path in context.tree, if one is recorded.
+    int32_t node = -1;
+
     for (uint32_t depth = 0;; ++depth) {
         ++context.rays;
+        if (context.tree)
+            node = context.tree->add_ray(depth == 0 ? RayKind::Camera : RayKind::Bounce, node, depth, ray, throughput);
         Ray r = ray;
         Hit hit;
         if (!scene.intersect(r, hit)) {
             // The background is not sampled as a light, so what BSDF sampling finds counts in full.
-            radiance += throughput * scene.background().evaluate(ray.direction);
+            const Color background = scene.background().evaluate(ray.direction);
+            radiance += throughput * background;
+            if (context.tree) context.tree->add_radiance(node, background);
             break;
         }
         const SurfaceInteraction si = scene.interaction(r, hit);
@@ -64,6 +71,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         if (si.blends_materials) blended = blended_material(scene, si);
         const Material& m = blended ? *blended : scene.material(si.materials[0]);
         const ShadingPoint sp = shading_point(si, m, ray, media);
+        if (context.tree) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], sp.n);
 
         const Color le = scene.emitted(hit.object, m, si, sp.wo);
         if (!le.is_black()) {
@@ -72,6 +80,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
             if (light && !specular_bounce)
                 weight = mis_weight(bsdf_pdf, light_choice_pdf * light->pdf(previous_point, si.p, si.geometric_normal));
             radiance += throughput * le * weight;
+            if (context.tree) context.tree->add_radiance(node, le * weight);
         }
         if (depth >= max_depth_) break;
 
@@ -88,11 +97,17 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
                 const Color f = bsdf.eval(ls.direction);
                 if (!f.is_black()) {
                     ++context.rays;
-                    if (!scene.occluded(shadow_ray(si.p, sp.ng, ls), DielectricShadows::Opaque)) {
+                    const Ray shadow = shadow_ray(si.p, sp.ng, ls);
+                    const bool blocked = scene.occluded(shadow, DielectricShadows::Opaque);
+                    Color direct;
+                    if (!blocked) {
                         const float pdf = light_choice_pdf * ls.pdf;
                         const float weight = ls.is_delta ? 1.0f : mis_weight(pdf, bsdf.pdf(ls.direction));
-                        radiance += throughput * f * ls.radiance * (dot(sp.n, ls.direction) * weight / pdf);
+                        const float scale = dot(sp.n, ls.direction) * weight / pdf;
+                        radiance += throughput * f * ls.radiance * scale;
+                        if (context.tree) direct = f * ls.radiance * scale;
                     }
+                    if (context.tree) context.tree->add_shadow_ray(node, shadow, uint32_t(chosen), blocked, direct);
                 }
             }
         }

@@ -19,19 +19,27 @@ Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceConte
 }
 
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
-                                      const Vec3& ng, TraceContext& context) const {
+                                      const Vec3& ng, TraceContext& context, int32_t node) const {
     const Vec3 origin = offset_ray_origin(si.p, ng);
     Color sum;
-    auto add = [&](const LightSample& ls, float weight) {
+    auto add = [&](const LightSample& ls, float weight, uint32_t light) {
         if (!(ls.pdf > 0.0f) || ls.radiance.is_black()) return;
         if (!bsdf.may_reflect(ls.direction)) return;  // behind the surface, or a glass with no smooth lobe
         ++context.rays;
-        if (scene.occluded(shadow_ray(origin, ls))) return;
-        sum += bsdf.eval(ls.direction) * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
+        const Ray shadow = shadow_ray(origin, ls);
+        if (scene.occluded(shadow)) {
+            if (context.tree) context.tree->add_shadow_ray(node, shadow, light, true, Color());
+            return;
+        }
+        const Color c = bsdf.eval(ls.direction) * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
+        if (context.tree) context.tree->add_shadow_ray(node, shadow, light, false, c);
+        sum += c;
     };
-    for (const Light* light : scene.all_lights()) {
+    const std::vector<const Light*>& lights = scene.all_lights();
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        const Light* light = lights[i];
         if (light->is_delta()) {
-            add(light->sample(si.p, Vec2()), 1.0f);
+            add(light->sample(si.p, Vec2()), 1.0f, i);
             continue;
         }
         // N stratified samples of this light: the estimate (1/N) Σ f·L·cosθ/pdf.
@@ -43,49 +51,66 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
             us = large;
         }
         context.sampler.next_2d_set(us);
-        for (const Vec2& u : us) add(light->sample(si.p, u), 1.0f / float(light_samples_));
+        for (const Vec2& u : us) add(light->sample(si.p, u), 1.0f / float(light_samples_), i);
     }
     return sum;
 }
 
 Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
-                               TraceContext& context) const {
+                               TraceContext& context, const RayBranch& branch) const {
     ++context.rays;
+    const int32_t node =
+        context.tree ? context.tree->add_ray(branch.kind, branch.parent, depth, ray, branch.weight) : -1;
     Ray r = ray;
     Hit hit;
-    if (!scene.intersect(r, hit)) return scene.background().evaluate(ray.direction);
+    if (!scene.intersect(r, hit)) {
+        const Color background = scene.background().evaluate(ray.direction);
+        if (context.tree) context.tree->add_radiance(node, background);
+        return background;
+    }
 
     const SurfaceInteraction si = scene.interaction(r, hit);
+    const Hit where{.t = r.tmax, .object = hit.object, .primitive = hit.primitive, .u = hit.u, .v = hit.v};
     // Only hits on per-vertex materials build a (blended) Material.
-    if (si.blends_materials) return shade(scene, ray, hit.object, si, blended_material(scene, si), depth, media, context);
-    return shade(scene, ray, hit.object, si, scene.material(si.materials[0]), depth, media, context);
+    if (si.blends_materials)
+        return shade(scene, ray, where, si, blended_material(scene, si), depth, media, context, node);
+    return shade(scene, ray, where, si, scene.material(si.materials[0]), depth, media, context, node);
 }
 
-Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
-                               const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const {
+Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, const Hit& hit, const SurfaceInteraction& si,
+                               const Material& m, uint32_t depth, const IorStack& media, TraceContext& context,
+                               int32_t node) const {
     const ShadingPoint sp = shading_point(si, m, ray, media);
     const Color texture = diffuse_texture(m, si);
     const Bsdf bsdf(m, texture, sp.n, sp.ng, sp.wo, sp.media);
+    if (context.tree) context.tree->set_hit(node, hit.t, hit.object, si.materials[0], sp.n);
 
-    Color radiance = scene.emitted(object, m, si, sp.wo);
+    Color radiance = scene.emitted(hit.object, m, si, sp.wo);
     const float t = std::clamp(m.transparency, 0.0f, 1.0f);
     if (t < 1.0f) {
         // Whitted's ambient term: ka·La, textured like the diffuse term; no BSDF lobe.
         radiance += texture * m.ambient * scene.ambient_light() * (1.0f - t);
-        radiance += direct_light(scene, bsdf, si, sp.ng, context);
+        if (context.tree) context.tree->add_radiance(node, radiance);
+        radiance += direct_light(scene, bsdf, si, sp.ng, context, node);
+    } else if (context.tree) {
+        context.tree->add_radiance(node, radiance);
     }
     if (depth >= max_depth_) return radiance;
 
+    // The throughput from the camera to the children, for the tree only.
+    const Color weight = context.tree ? context.tree->nodes()[std::size_t(node)].weight : Color(1.0f);
     const SpecularLobes& specular = bsdf.specular();
     // A reflection that the shading normal bends below the true surface would start inside it.
     if (!specular.reflection.is_black() && dot(specular.reflected, sp.ng) > 0.0f) {
         const Ray reflected(offset_ray_origin(si.p, sp.ng), specular.reflected);
-        radiance += specular.reflection * trace(scene, reflected, depth + 1, media, context);
+        const RayBranch child{RayKind::Reflection, node, weight * specular.reflection};
+        radiance += specular.reflection * trace(scene, reflected, depth + 1, media, context, child);
     }
     if (specular.transmission > 0.0f && specular.refracted) {
         const IorStack inside = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
         const Ray transmitted(offset_ray_origin(si.p, -sp.ng), *specular.refracted);
-        radiance += trace(scene, transmitted, depth + 1, inside, context) * specular.transmission;
+        const RayBranch child{RayKind::Refraction, node, weight * specular.transmission};
+        radiance += trace(scene, transmitted, depth + 1, inside, context, child) * specular.transmission;
     }
     return radiance;
 }

@@ -2,6 +2,7 @@
 /// \file Integrator base: owns the pixel loop; subclasses compute radiance along a ray.
 
 #include "glint/image/film.h"
+#include "glint/integrators/ray_tree.h"
 #include "glint/integrators/render_settings.h"
 #include "glint/integrators/tile_grid.h"
 #include "glint/math/color.h"
@@ -11,11 +12,13 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace glint {
 
+class Filter;
 class RenderScene;
 
 struct RenderStats {
@@ -28,10 +31,12 @@ struct RenderStats {
     [[nodiscard]] bool complete() const { return tiles_done == tiles; }
 };
 
-/// Per-pixel-sample context handed to Li(): the sample generator and a ray counter.
+/// Per-pixel-sample context handed to Li(): the sample generator, a ray counter and, when
+/// a pixel is being explained, the tree its rays are recorded in.
 struct TraceContext {
     Sampler& sampler;
     uint64_t rays = 0;
+    RayTree* tree = nullptr;
 };
 
 /// The threads this machine runs at once; more would not render faster.
@@ -56,6 +61,12 @@ public:
                        const ProgressCallback& progress = {}, const std::atomic<bool>* stop = nullptr,
                        TileGrid* tiles = nullptr) const;
 
+    /// Pixel (x, y) of the image `render` makes with these settings: every sample as the
+    /// render takes it, and the rays of sample `sample` (of every sample when none is
+    /// given) recorded. Throws std::out_of_range for a pixel or sample that does not exist.
+    [[nodiscard]] PixelExplanation explain(const RenderScene& scene, const RenderSettings& settings, uint32_t x,
+                                           uint32_t y, std::optional<uint32_t> sample = std::nullopt) const;
+
     /// Radiance arriving at the camera along `ray`.
     [[nodiscard]] virtual Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const = 0;
 
@@ -64,6 +75,12 @@ public:
         (void)scene;
         return {};
     }
+
+private:
+    /// Sample `index` of pixel (x, y) of a `width`×`height` image: where it falls, its
+    /// filter weight and its radiance. The one place both render and explain take samples.
+    ExplainedSample take_sample(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y, uint32_t index,
+                                uint32_t width, uint32_t height, TraceContext& context) const;
 };
 
 }  // namespace glint

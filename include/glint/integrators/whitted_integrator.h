@@ -10,6 +10,7 @@ namespace glint {
 
 class Bsdf;
 struct Material;
+struct Hit;
 struct SurfaceInteraction;
 
 /// Direct light (ambient, Lambert, optional Blinn-Phong) with shadow rays, recursive
@@ -28,15 +29,17 @@ public:
 
     /// Radiance along `ray` at recursion `depth` inside the media of `media`.
     [[nodiscard]] Color trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
-                              TraceContext& context) const;
+                              TraceContext& context, const RayBranch& branch = {}) const;
 
 private:
-    /// Radiance leaving the hit `si` on `object`, of material `m`, back along `ray`.
-    [[nodiscard]] Color shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
-                              const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const;
+    /// Radiance leaving the hit `si` (`hit`: its object and distance), of material `m`, back
+    /// along `ray`; `node` is the ray in context.tree, if one is recorded.
+    [[nodiscard]] Color shade(const RenderScene& scene, const Ray& ray, const Hit& hit, const SurfaceInteraction& si,
+                              const Material& m, uint32_t depth, const IorStack& media, TraceContext& context,
+                              int32_t node) const;
     /// Σ over lights of the BSDF's smooth lobes times the visible light (f·L·cosθ/pdf).
     [[nodiscard]] Color direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
-                                     const Vec3& ng, TraceContext& context) const;
+                                     const Vec3& ng, TraceContext& context, int32_t node) const;
 
     uint32_t max_depth_;
     uint32_t light_samples_;

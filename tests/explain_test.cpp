@@ -1,0 +1,200 @@
+// `glint explain`: the ray tree of a pixel, checked against what `glint render` writes and
+// against Fresnel's formula; its mistakes on the command line get a reason and exit 1.
+#include "cli_runner.h"
+
+#include "glint/image/image_io.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using glint_test::run_cli;
+using nlohmann::json;
+
+const std::string kCli = GLINT_CLI;
+const fs::path kScenes = fs::path(GLINT_SOURCE_DIR) / "scenes";
+
+json explain_json(const std::string& args, const fs::path& dir) {
+    const glint_test::CliResult r = run_cli(kCli, "explain " + args + " --json", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return json::parse(r.out);
+}
+
+float channel(const json& rgb, int c) { return rgb.at(c).get<float>(); }
+
+/// Every sample's rays add up to its radiance, and the value is the filter-weighted mean of
+/// the samples; counts the ray kinds seen.
+void expect_consistent(const json& pixel, std::map<std::string, int>& kinds) {
+    float value_sum[3] = {0, 0, 0}, weight_sum = 0;
+    for (const json& sample : pixel.at("samples")) {
+        const float w = sample.at("filter_weight").get<float>();
+        weight_sum += w;
+        float sum[3] = {0, 0, 0};
+        ASSERT_TRUE(sample.contains("rays"));
+        const json& rays = sample.at("rays");
+        ASSERT_FALSE(rays.empty());
+        EXPECT_EQ(rays[0].at("kind"), "camera");
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const json& ray = rays[i];
+            ++kinds[ray.at("kind").get<std::string>()];
+            if (i > 0) {
+                EXPECT_LT(ray.at("parent").get<int>(), int(i)) << "a parent comes before its children";
+            }
+            for (int c = 0; c < 3; ++c) sum[c] += channel(ray.at("contribution"), c);
+        }
+        for (int c = 0; c < 3; ++c) {
+            const float radiance = channel(sample.at("radiance"), c);
+            EXPECT_NEAR(sum[c], radiance, 1e-5f * std::abs(radiance) + 1e-6f)
+                << "pixel " << pixel.at("pixel") << " sample " << sample.at("index") << " channel " << c;
+            value_sum[c] += w * radiance;
+        }
+    }
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(value_sum[c] / weight_sum, channel(pixel.at("value"), c),
+                    1e-5f * value_sum[c] / weight_sum + 1e-6f);
+}
+
+/// For pixels across the image: the explained value is the rendered pixel, bit for bit, and
+/// the rays add up. Returns how often each ray kind appeared.
+std::map<std::string, int> check_against_render(const fs::path& scene, const std::string& settings) {
+    const fs::path dir = glint_test::temp_dir();
+    const fs::path exr = dir / "render.exr";
+    const glint_test::CliResult r =
+        run_cli(kCli, "render " + scene.string() + " " + settings + " -q -o " + exr.string(), dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const glint::Image image = glint::read_image(exr);
+    std::map<std::string, int> kinds;
+    for (int y = 3; y < image.height; y += 9)
+        for (int x = 5; x < image.width; x += 11) {
+            const json pixel = explain_json(
+                scene.string() + " " + settings + " --pixel " + std::to_string(x) + "," + std::to_string(y), dir);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_EQ(channel(pixel.at("value"), c), image.at(x, y, c))
+                    << "pixel " << x << "," << y << " channel " << c;
+            expect_consistent(pixel, kinds);
+        }
+    fs::remove_all(dir);
+    return kinds;
+}
+
+}  // namespace
+
+TEST(Explain, WhittedValueIsTheRenderedPixelAndTheRaysAddUp) {
+    const auto kinds =
+        check_against_render(kScenes / "whitted1980.toml", "--width 64 --height 48 --spp 4 --filter mitchell");
+    // The scene's mirror and glass spheres give every kind of Whitted ray.
+    EXPECT_GT(kinds.at("camera"), 0);
+    EXPECT_GT(kinds.count("reflection") ? kinds.at("reflection") : 0, 0);
+    EXPECT_GT(kinds.count("refraction") ? kinds.at("refraction") : 0, 0);
+    EXPECT_GT(kinds.count("shadow") ? kinds.at("shadow") : 0, 0);
+}
+
+TEST(Explain, PathValueIsTheRenderedPixelAndTheRaysAddUp) {
+    const auto kinds = check_against_render(kScenes / "cornell_area.toml",
+                                            "--width 40 --height 40 --spp 4 --integrator path --depth 4");
+    EXPECT_GT(kinds.count("bounce") ? kinds.at("bounce") : 0, 0);
+    EXPECT_GT(kinds.count("shadow") ? kinds.at("shadow") : 0, 0);
+}
+
+TEST(Explain, GlassSplitsByFresnelsReflectance) {
+    const fs::path dir = glint_test::temp_dir();
+    // A clear glass ball filling the view: each camera ray splits into a reflection weighted
+    // by Schlick's F(θ) and a refraction weighted by 1 − F.
+    glint_test::write_file(dir / "glass.toml", R"([render]
+width = 9
+height = 9
+max_depth = 1
+[camera]
+position = [0, 0, 5]
+look_at = [0, 0, 0]
+fov = 20
+[background]
+color = [0.2, 0.3, 0.4]
+[[materials]]
+name = "clear glass"
+diffuse = 0
+transparency = 1
+ior = 1.5
+[[objects]]
+name = "ball"
+type = "sphere"
+center = [0, 0, 0]
+radius = 1
+material = "clear glass"
+)");
+    for (const char* pixel : {"4,4", "2,3", "1,4"}) {
+        const json e = explain_json((dir / "glass.toml").string() + " --pixel " + pixel, dir);
+        const json& rays = e.at("samples").at(0).at("rays");
+        const json& camera = rays.at(0);
+        ASSERT_FALSE(camera.at("hit").is_null()) << pixel;
+        EXPECT_EQ(camera.at("hit").at("object_name"), "ball");
+        EXPECT_EQ(camera.at("hit").at("material_name"), "clear glass");
+        float cos_theta = 0;
+        for (int i = 0; i < 3; ++i)
+            cos_theta -= camera.at("direction")[i].get<float>() * camera.at("hit").at("normal")[i].get<float>();
+        const float f0 = 0.04f;  // ((1.5 − 1) / (1.5 + 1))²
+        const float fresnel = f0 + (1 - f0) * std::pow(1 - cos_theta, 5.0f);
+        int reflections = 0, refractions = 0;
+        for (const json& ray : rays) {
+            if (ray.at("parent") != 0) continue;
+            if (ray.at("kind") == "reflection") {
+                ++reflections;
+                EXPECT_NEAR(ray.at("factor")[0].get<float>(), fresnel, 1e-5f) << pixel;
+            }
+            if (ray.at("kind") == "refraction") {
+                ++refractions;
+                EXPECT_NEAR(ray.at("factor")[0].get<float>(), 1 - fresnel, 1e-5f) << pixel;
+            }
+        }
+        EXPECT_EQ(reflections, 1) << pixel;
+        EXPECT_EQ(refractions, 1) << pixel;
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Explain, TextNamesObjectsMaterialsAndLights) {
+    const fs::path dir = glint_test::temp_dir();
+    const glint_test::CliResult r =
+        run_cli(kCli, "explain " + (kScenes / "whitted1980.toml").string() + " --pixel 320,200 --spp 1", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* expected :
+         {"pixel (320, 200) of 640×480, 1 spp, whitted integrator, seed 0", "sample 0 at film (",
+          "#0 camera ray: hits 'glass sphere' ('glass') at t = ", "#1 shadow ray to light #0 (point): ",
+          "#2 reflection ray (factor ", "refraction ray (factor ", "the rays add up to "})
+        EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
+    fs::remove_all(dir);
+}
+
+TEST(Explain, OneSampleCanBeChosen) {
+    const fs::path dir = glint_test::temp_dir();
+    const json e = explain_json((kScenes / "spheres.toml").string() + " --pixel 10,10 --spp 4 --sample 2", dir);
+    ASSERT_EQ(e.at("samples").size(), 4u);
+    for (const json& sample : e.at("samples"))
+        EXPECT_EQ(sample.contains("rays"), sample.at("index") == 2) << sample.at("index");
+    fs::remove_all(dir);
+}
+
+TEST(Explain, MistakesGetAReasonAndExitOne) {
+    const fs::path dir = glint_test::temp_dir();
+    const std::string scene = (kScenes / "spheres.toml").string();
+    const std::pair<std::string, std::string> cases[] = {
+        {scene + " --pixel 640,0", "--pixel 640,0: outside the 640×480 image (columns 0 to 639, rows 0 to 479)"},
+        {scene + " --pixel 3", "--pixel: expected X,Y (column and row from the top-left, whole numbers); got '3'"},
+        {scene + " --pixel 3,-1", "--pixel: expected X,Y"},
+        {scene + " --pixel 3,4 --spp 4 --sample 4",
+         "--sample: expected a sample of this render's 4 per pixel, 0 to 3; got 4"},
+        {scene + " --pixel 3,4 --spp 5", "--spp: expected a square number"},
+        {scene, "--pixel is required"},
+    };
+    for (const auto& [args, expected] : cases) {
+        const glint_test::CliResult r = run_cli(kCli, "explain " + args, dir);
+        EXPECT_EQ(r.exit_code, 1) << args;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+    }
+    fs::remove_all(dir);
+}
