@@ -5,6 +5,7 @@
 #include "info_command.h"
 #include "render_command.h"
 #include "scene_source.h"
+#include "view_command.h"
 
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
@@ -47,6 +48,11 @@ int main(int argc, char** argv) {
         "explain", "Why a pixel has its colour: the rays of its samples, what they hit and what each adds");
     glint::app::add_explain_options(explain_cmd, explain);
 
+    glint::app::ViewOptions view;
+    CLI::App* view_cmd = app.add_subcommand(
+        "view", "Open a window that renders the scene progressively, with an orbit camera and pixel explanations");
+    glint::app::add_view_options(view_cmd, view);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -58,6 +64,7 @@ int main(int argc, char** argv) {
         if (*render_cmd) return glint::app::run_render(render);
         if (*info_cmd) return glint::app::run_info(info_path, info_options);
         if (*explain_cmd) return glint::app::run_explain(explain);
+        if (*view_cmd) return glint::app::run_view(view);
     } catch (const std::exception& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());
         return 1;

@@ -18,6 +18,7 @@ packages=(
   libcli11-dev libfmt-dev libpcg-cpp-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev
   clang libclang-rt-14-dev  # libFuzzer and sanitizers for the fuzz targets (fuzz/)
+  libsdl2-dev libimgui-dev xvfb xauth  # glint view, and its tests in a virtual display
 )
 
 missing=()

@@ -1,5 +1,5 @@
-#include "glint/math/constants.h"
 #include "glint/scene/camera.h"
+#include "glint/math/constants.h"
 
 #include <gtest/gtest.h>
 
@@ -26,8 +26,7 @@ TEST(Camera, EdgesMatchTheFieldOfView) {
     EXPECT_GT(top.direction.y, 0.0f);
     // Right edge centre: horizontal half-angle from tan = aspect · tan(fov/2).
     const Ray right = cam.generate_ray(float(w), h / 2.0f, w, h);
-    EXPECT_NEAR(std::atan2(right.direction.x, -right.direction.z),
-                std::atan(2.0f * std::tan(radians(fov / 2))), 1e-5f);
+    EXPECT_NEAR(std::atan2(right.direction.x, -right.direction.z), std::atan(2.0f * std::tan(radians(fov / 2))), 1e-5f);
     // Corner: both offsets at once; (0,0) is the top-left.
     const Ray corner = cam.generate_ray(0.0f, 0.0f, w, h);
     const float t = std::tan(radians(fov / 2));
@@ -55,4 +54,20 @@ TEST(Camera, RejectsDegenerateSetups) {
     EXPECT_THROW((void)Camera::perspective({0, 0, 0}, {0, 0, 0}, {0, 1, 0}, 45.0f), std::invalid_argument);
     EXPECT_THROW((void)Camera::perspective({0, 0, 0}, {0, 5, 0}, {0, 1, 0}, 45.0f), std::invalid_argument);
     EXPECT_THROW((void)Camera::perspective({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 180.0f), std::invalid_argument);
+}
+
+TEST(Camera, ProjectFindsThePixelWhoseRayPassesThroughAPoint) {
+    const glint::Camera cameras[] = {
+        glint::Camera::perspective({22, 24, 26}, {0, 2, 0}, {0, 1, 0}, 52.0f),
+        glint::Camera::orthographic({0, 5, 10}, {0, 0, 0}, {0, 1, 0}, 6.0f),
+    };
+    for (const glint::Camera& camera : cameras)
+        for (const auto& [x, y] : {std::pair{0.5f, 0.5f}, {320.0f, 240.0f}, {600.25f, 17.5f}, {3.0f, 470.0f}}) {
+            const glint::Ray ray = camera.generate_ray(x, y, 640, 480);
+            const std::optional<glint::Vec2> back = camera.project(ray.origin + ray.direction * 7.5f, 640, 480);
+            ASSERT_TRUE(back.has_value());
+            EXPECT_NEAR(back->x, x, 2e-3f);
+            EXPECT_NEAR(back->y, y, 2e-3f);
+        }
+    EXPECT_FALSE(cameras[0].project({30, 30, 30}, 640, 480).has_value()) << "behind the eye";
 }

@@ -18,22 +18,46 @@ namespace glint {
 
 uint32_t max_render_threads() { return static_cast<uint32_t>(tbb::info::default_concurrency()); }
 
-ExplainedSample Integrator::take_sample(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y,
-                                        uint32_t index, uint32_t width, uint32_t height, TraceContext& context) const {
+namespace {
+
+/// `render_tile(t)` for every tile t < count, in parallel on `threads` threads (0: all).
+template <class F>
+void for_each_tile(uint32_t threads, uint32_t count, const F& render_tile) {
+    auto render_tiles = [&] {
+        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 1), [&](const tbb::blocked_range<uint32_t>& r) {
+            for (uint32_t tile = r.begin(); tile != r.end(); ++tile) render_tile(tile);
+        });
+    };
+    if (threads == 0) {
+        render_tiles();
+    } else {
+        tbb::task_arena arena(int(std::min(threads, max_render_threads())));
+        arena.execute(render_tiles);
+    }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+ExplainedSample Integrator::take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter,
+                                        uint32_t x, uint32_t y, uint32_t index, uint32_t width, uint32_t height,
+                                        TraceContext& context) const {
     context.sampler.start_pixel_sample(uint64_t(y) * width + x, index);
     const FilterSample fs = filter.sample(context.sampler.pixel_2d());
     ExplainedSample sample;
     sample.index = index;
     sample.film_position = Vec2((float(x) + 0.5f) + fs.offset.x, (float(y) + 0.5f) + fs.offset.y);
     sample.filter_weight = fs.weight;
-    const Ray ray =
-        scene.camera().generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height));
+    const Ray ray = camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height));
     sample.radiance = Li(scene, ray, context);
     return sample;
 }
 
 PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSettings& settings, uint32_t x, uint32_t y,
-                                     std::optional<uint32_t> sample) const {
+                                     std::optional<uint32_t> sample, const Camera* camera) const {
     const uint32_t n = settings.samples_per_axis;
     if (n == 0) throw std::invalid_argument("samples per axis must be at least 1");
     if (x >= settings.width || y >= settings.height)
@@ -51,7 +75,8 @@ PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSetti
         RayTree tree;
         const bool recorded = !sample || *sample == index;
         TraceContext context{.sampler = sampler, .rays = 0, .tree = recorded ? &tree : nullptr};
-        ExplainedSample s = take_sample(scene, filter, x, y, index, settings.width, settings.height, context);
+        ExplainedSample s = take_sample(scene, camera ? *camera : scene.camera(), filter, x, y, index, settings.width,
+                                        settings.height, context);
         if (recorded) s.tree = std::move(tree);
         pixel.add_sample(0, 0, s.radiance, s.filter_weight);
         explanation.samples.push_back(std::move(s));
@@ -83,7 +108,8 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
         for (uint32_t y = y0; y < y1; ++y)
             for (uint32_t x = x0; x < x1; ++x)
                 for (uint32_t index = 0; index < n * n; ++index) {
-                    const ExplainedSample sample = take_sample(scene, filter, x, y, index, width, height, context);
+                    const ExplainedSample sample =
+                        take_sample(scene, scene.camera(), filter, x, y, index, width, height, context);
                     film.add_sample(x, y, sample.radiance, sample.filter_weight);
                 }
         rays += context.rays;
@@ -91,22 +117,44 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
         const uint32_t done = ++finished;
         if (progress) progress(done, tile_count);
     };
-    auto render_tiles = [&] {
-        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tile_count, 1), [&](const tbb::blocked_range<uint32_t>& r) {
-            for (uint32_t tile = r.begin(); tile != r.end(); ++tile) render_tile(tile);
-        });
-    };
-    if (settings.threads == 0) {
-        render_tiles();
-    } else {
-        tbb::task_arena arena(int(std::min(settings.threads, max_render_threads())));
-        arena.execute(render_tiles);
-    }
+    for_each_tile(settings.threads, tile_count, render_tile);
     RenderStats stats;
     stats.rays = rays.load();
     stats.tiles_done = finished.load();
     stats.tiles = tile_count;
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.seconds = seconds_since(start);
+    return stats;
+}
+
+RenderStats Integrator::render_pass(const RenderScene& scene, const Camera& camera, const RenderSettings& settings,
+                                    Film& film, uint32_t index, const std::atomic<bool>* stop) const {
+    const uint32_t n = settings.samples_per_axis;
+    if (n == 0) throw std::invalid_argument("samples per axis must be at least 1");
+    if (index >= n * n) throw std::out_of_range("render_pass: sample index past the pixel's samples");
+    const Filter filter(settings.filter, settings.filter_radius);
+    const auto start = std::chrono::steady_clock::now();
+    const uint32_t width = film.width(), height = film.height();
+    const TileGrid grid(width, height);
+    std::atomic<uint64_t> rays{0};
+    std::atomic<uint32_t> finished{0};
+    for_each_tile(settings.threads, grid.count(), [&](uint32_t tile) {
+        if (stop && stop->load(std::memory_order_relaxed)) return;
+        const auto [x0, y0, x1, y1] = grid.bounds(tile);
+        Sampler sampler(settings.seed, n);
+        TraceContext context{sampler};
+        for (uint32_t y = y0; y < y1; ++y)
+            for (uint32_t x = x0; x < x1; ++x) {
+                const ExplainedSample sample = take_sample(scene, camera, filter, x, y, index, width, height, context);
+                film.add_sample(x, y, sample.radiance, sample.filter_weight);
+            }
+        rays += context.rays;
+        ++finished;
+    });
+    RenderStats stats;
+    stats.rays = rays.load();
+    stats.tiles_done = finished.load();
+    stats.tiles = grid.count();
+    stats.seconds = seconds_since(start);
     return stats;
 }
 

@@ -57,6 +57,7 @@ void RayTree::add_shadow_ray(int32_t parent, const Ray& ray, uint32_t light, boo
     RayTreeNode& n = nodes_[std::size_t(node)];
     n.light = light;
     n.blocked = blocked;
+    n.t = ray.tmax;  // the distance to the light (infinite for a directional one)
     if (!blocked) n.contribution = n.weight * radiance;
 }
 

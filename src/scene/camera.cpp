@@ -15,8 +15,9 @@ Camera::Camera(Projection projection, const Vec3& eye, const Vec3& target, const
     if (!(length(view) > 0.0f) || !is_finite(view)) throw std::invalid_argument("camera position equals its target");
     forward_ = normalize(view);
     const Vec3 side = cross(forward_, up);
-    if (!(length(side) > 1e-6f * length(up))) throw std::invalid_argument("camera up vector is parallel to the view direction");
-    right_ = normalize(side);            // I_x = d_c × u_c
+    if (!(length(side) > 1e-6f * length(up)))
+        throw std::invalid_argument("camera up vector is parallel to the view direction");
+    right_ = normalize(side);                  // I_x = d_c × u_c
     up_ = normalize(cross(right_, forward_));  // u_c made orthogonal to d_c
 }
 
@@ -49,6 +50,24 @@ Ray Camera::generate_ray(float x, float y, int width, int height) const {
     const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
     const Vec3 d = forward_ + (right_ * (sx * aspect) + up_ * sy) * tan_half;
     return {eye_, normalize(d)};
+}
+
+std::optional<Vec2> Camera::project(const Vec3& p, int width, int height) const {
+    const float aspect = float(width) / float(height);
+    const Vec3 d = p - eye_;
+    float sx = 0.0f, sy = 0.0f;
+    if (projection_ == Projection::Orthographic) {
+        const float half_h = 0.5f * view_height_;
+        sx = dot(d, right_) / (half_h * aspect);
+        sy = dot(d, up_) / half_h;
+    } else {
+        const float depth = dot(d, forward_);
+        if (!(depth > 0.0f)) return std::nullopt;
+        const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
+        sx = dot(d, right_) / (depth * tan_half * aspect);
+        sy = dot(d, up_) / (depth * tan_half);
+    }
+    return Vec2((sx + 1.0f) * 0.5f * float(width), (1.0f - sy) * 0.5f * float(height));
 }
 
 }  // namespace glint

@@ -18,6 +18,7 @@
 
 namespace glint {
 
+class Camera;
 class Filter;
 class RenderScene;
 
@@ -64,8 +65,18 @@ public:
     /// Pixel (x, y) of the image `render` makes with these settings: every sample as the
     /// render takes it, and the rays of sample `sample` (of every sample when none is
     /// given) recorded. Throws std::out_of_range for a pixel or sample that does not exist.
+    /// `camera` replaces the scene's (the viewer's orbit camera) when given.
     [[nodiscard]] PixelExplanation explain(const RenderScene& scene, const RenderSettings& settings, uint32_t x,
-                                           uint32_t y, std::optional<uint32_t> sample = std::nullopt) const;
+                                           uint32_t y, std::optional<uint32_t> sample = std::nullopt,
+                                           const Camera* camera = nullptr) const;
+
+    /// One pass of a progressive render (the viewer's): sample `index` of the settings' N×N
+    /// for every pixel of `film`, seen through `camera`. Passes 0, 1, ..., N²−1 in order
+    /// with the scene's camera make the film render() makes, bit for bit: each pixel gets
+    /// the same samples in the same order. Stops between tiles once *stop is set
+    /// (stats.complete() is then false and the film holds part of a pass).
+    RenderStats render_pass(const RenderScene& scene, const Camera& camera, const RenderSettings& settings, Film& film,
+                            uint32_t index, const std::atomic<bool>* stop = nullptr) const;
 
     /// Radiance arriving at the camera along `ray`.
     [[nodiscard]] virtual Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const = 0;
@@ -79,8 +90,9 @@ public:
 private:
     /// Sample `index` of pixel (x, y) of a `width`×`height` image: where it falls, its
     /// filter weight and its radiance. The one place both render and explain take samples.
-    ExplainedSample take_sample(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y, uint32_t index,
-                                uint32_t width, uint32_t height, TraceContext& context) const;
+    ExplainedSample take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x,
+                                uint32_t y, uint32_t index, uint32_t width, uint32_t height,
+                                TraceContext& context) const;
 };
 
 }  // namespace glint

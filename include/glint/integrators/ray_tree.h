@@ -45,6 +45,8 @@ struct RayTreeNode {
 
     /// Camera, reflection, refraction and bounce rays: what they met (none: the background).
     bool hit = false;
+    /// Where the ray ended: at its hit, or (shadow rays) at the light, infinite for a
+    /// directional light.
     float t = 0.0f;
     uint32_t object = 0;
     uint32_t material = 0;

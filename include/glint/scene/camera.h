@@ -2,7 +2,10 @@
 /// \file Pinhole (perspective) and orthographic cameras.
 
 #include "glint/math/ray.h"
+#include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
+
+#include <optional>
 
 namespace glint {
 
@@ -24,6 +27,10 @@ public:
     /// image, (width, height) = bottom-right; the aspect ratio is width/height. Directions
     /// are unit length.
     [[nodiscard]] Ray generate_ray(float x, float y, int width, int height) const;
+    /// Where world point `p` appears on a `width`×`height` film: the (x, y) that
+    /// generate_ray() turns into a ray through `p`; none for a point behind the eye. Used to
+    /// draw rays over the image.
+    [[nodiscard]] std::optional<Vec2> project(const Vec3& p, int width, int height) const;
 
     [[nodiscard]] Projection projection() const { return projection_; }
     [[nodiscard]] const Vec3& eye() const { return eye_; }

@@ -1,0 +1,21 @@
+#pragma once
+// A pixel's explanation (Integrator::explain) in words: the indented ray tree that `glint
+// explain` prints and the viewer shows, and the JSON of `glint explain --json`.
+
+#include "glint/integrators/ray_tree.h"
+#include "glint/integrators/render_settings.h"
+
+#include <string>
+
+namespace glint {
+class RenderScene;
+}
+
+namespace glint::app {
+
+[[nodiscard]] std::string explanation_text(const RenderScene& scene, const RenderSettings& settings,
+                                           const PixelExplanation& explanation);
+[[nodiscard]] std::string explanation_json(const RenderScene& scene, const RenderSettings& settings,
+                                           const PixelExplanation& explanation);
+
+}  // namespace glint::app

@@ -1,0 +1,69 @@
+#include "view_command.h"
+
+#include "glint/image/image_io.h"
+#include "glint/integrators/integrator_registry.h"
+#include "glint/scene/render_scene.h"
+
+#ifdef GLINT_HAVE_VIEWER
+#include "viewer/session_script.h"
+#include "viewer/viewer_window.h"
+#endif
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace glint::app {
+
+void add_view_options(CLI::App* cmd, ViewOptions& opt) {
+    cmd->add_option("scene", opt.scene_path, "Scene file, as for `glint render`; none shows the built-in scene")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", opt.output, "Where S saves the image (.exr linear, .png sRGB); default <scene>.png");
+    cmd->add_option("--exposure", opt.exposure, "Exposure in stops for the window and PNG output");
+    cmd->add_option("--script", opt.script, "Run a scripted session from this file (for tests and demos)")
+        ->check(CLI::ExistingFile);
+    add_render_overrides(cmd, opt.overrides);
+    add_scene_options(cmd, opt.scene);
+}
+
+bool viewer_available() {
+#ifdef GLINT_HAVE_VIEWER
+    return true;
+#else
+    return false;
+#endif
+}
+
+int run_view(const ViewOptions& opt) {
+    if (!viewer_available())
+        throw std::runtime_error(
+            "this glint was built without the viewer (SDL2 or Dear ImGui was missing, or GLINT_VIEWER=OFF): install "
+            "libsdl2-dev and libimgui-dev (scripts/setup.sh does) and build again");
+#ifdef GLINT_HAVE_VIEWER
+    RenderSettings checked;
+    apply_overrides(opt.overrides, checked);
+    std::string output = opt.output;
+    if (output.empty())
+        output =
+            opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
+    check_output_path(output);
+    std::vector<ScriptStep> script;
+    if (opt.script) {
+        std::ifstream in(*opt.script);
+        script = parse_session_script({std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()});
+    }
+    SceneSource source = load_scene(opt.scene_path, opt.scene);
+    for (const std::string& w : source.loaded.warnings) fmt::print(stderr, "warning: {}\n", w);
+    RenderSettings& s = source.loaded.settings;
+    apply_overrides(opt.overrides, s);
+    const RenderScene scene(std::move(source.loaded.scene));
+    const std::unique_ptr<Integrator> integrator = make_integrator(s);
+    ViewerWindow window(scene, *integrator, s, ViewerOptions{output, opt.exposure, std::move(script)});
+    return window.run();
+#endif
+}
+
+}  // namespace glint::app

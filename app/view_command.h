@@ -1,0 +1,33 @@
+#pragma once
+// `glint view`: a window that renders the scene progressively, with an orbit camera, and
+// explains the pixel clicked. Built when SDL2 and Dear ImGui are installed (libsdl2-dev,
+// libimgui-dev); otherwise the command says so.
+
+#include "render_overrides.h"
+#include "scene_source.h"
+
+#include <optional>
+#include <string>
+
+namespace glint::app {
+
+struct ViewOptions {
+    std::string scene_path;
+    SceneOptions scene;
+    RenderOverrides overrides;
+    /// Where `S` saves the accumulated image; default <scene>.png.
+    std::string output;
+    float exposure = 0.0f;
+    /// A scripted session (viewer/session_script.h), read from this file.
+    std::optional<std::string> script;
+};
+
+void add_view_options(CLI::App* command, ViewOptions& options);
+
+/// Whether this build has the viewer.
+[[nodiscard]] bool viewer_available();
+
+/// Run `glint view`; returns the exit status. Throws on every error, with a message.
+int run_view(const ViewOptions& options);
+
+}  // namespace glint::app

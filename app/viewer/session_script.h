@@ -1,0 +1,33 @@
+#pragma once
+// A scripted viewer session, for tests and demos: what a user would do, one step per line
+// (or separated by ';'), fed to the window as SDL events so that the same handlers run.
+//
+//   wait converged        until every pass of the sample budget is in
+//   wait passes N         until N full-resolution passes are in
+//   wait frames N         N frames (lets a coarse frame show)
+//   key NAME              press and release a key: a letter, escape
+//   drag BUTTON DX DY     left, middle or right button, from the image centre, in pixels
+//   wheel N               N notches (negative: towards the user)
+//   click X Y             left click on image pixel (X, Y)
+//   save PATH             write the accumulated image (EXR/PNG by extension)
+//   screenshot PATH       write the window as it shows (PNG)
+//   quit                  close the window
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace glint::app {
+
+struct ScriptStep {
+    enum class Kind { WaitConverged, WaitPasses, WaitFrames, Key, Drag, Wheel, Click, Save, Screenshot, Quit };
+    Kind kind = Kind::Quit;
+    std::string text;  ///< key name, button name or path
+    int32_t a = 0, b = 0;
+};
+
+/// The steps of `script`. Throws std::invalid_argument "--script: step N ('...'): expected ..."
+/// for a step it cannot read.
+[[nodiscard]] std::vector<ScriptStep> parse_session_script(const std::string& script);
+
+}  // namespace glint::app

@@ -1,0 +1,464 @@
+#include "viewer_window.h"
+
+#include "../explanation_format.h"
+
+#include "glint/image/image_io.h"
+#include "glint/math/constants.h"
+#include "glint/scene/render_scene.h"
+
+#include <SDL_opengl.h>
+#include <fmt/core.h>
+#include <imgui.h>
+#include <imgui_impl_opengl2.h>
+#include <imgui_impl_sdl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace glint::app {
+
+namespace {
+
+constexpr int kPanelWidth = 400;
+constexpr float kOrbitPerPixel = 0.008f;  // radians
+constexpr int kClickSlop = 3;             // pixels a click may move and stay a click
+
+/// IEC 61966-2-1 sRGB encoding of a linear value, to 8 bits.
+uint8_t srgb8(float linear) {
+    const float v = std::clamp(linear, 0.0f, 1.0f);
+    const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+    return uint8_t(std::lround(encoded * 255.0f));
+}
+
+ImU32 ray_colour(const RayTreeNode& node) {
+    switch (node.kind) {
+        case RayKind::Camera:
+            return IM_COL32(255, 255, 255, 255);
+        case RayKind::Reflection:
+            return IM_COL32(80, 220, 255, 255);
+        case RayKind::Refraction:
+            return IM_COL32(120, 255, 120, 255);
+        case RayKind::Shadow:
+            return node.blocked ? IM_COL32(255, 70, 70, 255) : IM_COL32(255, 230, 80, 255);
+        case RayKind::Bounce:
+            return IM_COL32(255, 160, 60, 255);
+    }
+    return IM_COL32(255, 255, 255, 255);
+}
+
+}  // namespace
+
+ViewerWindow::ViewerWindow(const RenderScene& scene, const Integrator& integrator, const RenderSettings& settings,
+                           ViewerOptions options)
+    : scene_(scene), integrator_(integrator), settings_(settings), options_(std::move(options)) {
+    // Without a display SDL may pick a driver that shows nothing (offscreen, KMS), and the
+    // window would wait forever for input nobody can give.
+    const auto unset = [](const char* name) { return !std::getenv(name) || !*std::getenv(name); };
+    if (unset("DISPLAY") && unset("WAYLAND_DISPLAY") && unset("SDL_VIDEODRIVER"))
+        throw std::runtime_error(
+            "cannot open a window: no display (DISPLAY is not set); run under xvfb-run for a "
+            "virtual one");
+    if (SDL_Init(SDL_INIT_VIDEO) != 0)
+        throw std::runtime_error(std::string("cannot open a window: ") + SDL_GetError() +
+                                 " (no display? run under xvfb-run for a virtual one)");
+    // The image is shown at most 1280×900 on screen; larger images are scaled down.
+    scale_ = std::min({1.0f, 1280.0f / float(settings.width), 900.0f / float(settings.height)});
+    const int width = int(float(settings.width) * scale_) + kPanelWidth;
+    const int height = std::max(int(float(settings.height) * scale_), 600);
+    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    window_ = SDL_CreateWindow("glint view", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height,
+                               SDL_WINDOW_OPENGL);
+    if (window_) gl_ = SDL_GL_CreateContext(window_);
+    if (!window_ || !gl_) {
+        const std::string reason = SDL_GetError();
+        if (window_) SDL_DestroyWindow(window_);
+        SDL_Quit();
+        throw std::runtime_error("cannot open a window: " + reason);
+    }
+    SDL_GL_MakeCurrent(window_, gl_);
+    SDL_GL_SetSwapInterval(1);
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left behind
+    ImGui::StyleColorsDark();
+    ImGui_ImplSDL2_InitForOpenGL(window_, gl_);
+    ImGui_ImplOpenGL2_Init();
+    glGenTextures(1, &texture_);
+    render_ = std::make_unique<ProgressiveRender>(scene_, integrator_, settings_, scene_.camera());
+}
+
+ViewerWindow::~ViewerWindow() {
+    render_.reset();
+    glDeleteTextures(1, &texture_);
+    ImGui_ImplOpenGL2_Shutdown();
+    ImGui_ImplSDL2_Shutdown();
+    ImGui::DestroyContext();
+    SDL_GL_DeleteContext(gl_);
+    SDL_DestroyWindow(window_);
+    SDL_Quit();
+}
+
+Camera ViewerWindow::camera() const { return orbit_ ? orbit_->camera() : scene_.camera(); }
+
+OrbitCamera ViewerWindow::initial_orbit() const {
+    // Pivot about the scene's centre as seen along the view, at least a little ahead.
+    const Camera& c = scene_.camera();
+    const Bounds3 bounds = scene_.bounds();
+    const float ahead = bounds.empty() ? 1.0f : dot(bounds.center() - c.eye(), c.forward());
+    const float size = bounds.empty() ? 1.0f : length(bounds.diagonal());
+    return OrbitCamera::from(c, std::max(ahead, 0.05f * size));
+}
+
+OrbitCamera& ViewerWindow::orbit() {
+    if (!orbit_) orbit_ = initial_orbit();
+    return *orbit_;
+}
+
+void ViewerWindow::camera_changed(bool moving) { render_->restart(camera(), moving); }
+
+int ViewerWindow::run() {
+    uint64_t last = SDL_GetPerformanceCounter();
+    while (!quit_) {
+        for (SDL_Event event; SDL_PollEvent(&event);) {
+            ImGui_ImplSDL2_ProcessEvent(&event);
+            handle(event);
+        }
+        const uint64_t now = SDL_GetPerformanceCounter();
+        fly(float(double(now - last) / double(SDL_GetPerformanceFrequency())));
+        last = now;
+        run_script();
+        upload_newest();
+
+        ImGui_ImplOpenGL2_NewFrame();
+        ImGui_ImplSDL2_NewFrame();
+        ImGui::NewFrame();
+        const ImVec2 image_size(float(settings_.width) * scale_, float(settings_.height) * scale_);
+        ImGui::GetBackgroundDrawList()->AddImage(ImTextureID(intptr_t(texture_)), ImVec2(0, 0), image_size);
+        draw_rays();
+        draw_panel();
+        ImGui::Render();
+        int w = 0, h = 0;
+        SDL_GL_GetDrawableSize(window_, &w, &h);
+        glViewport(0, 0, w, h);
+        glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        if (!screenshot_path_.empty()) {
+            screenshot(screenshot_path_);
+            screenshot_path_.clear();
+        }
+        SDL_GL_SwapWindow(window_);
+        SDL_Delay(4);  // a virtual display does not wait for vsync
+    }
+    return 0;
+}
+
+void ViewerWindow::handle(const SDL_Event& event) {
+    const ImGuiIO& io = ImGui::GetIO();
+    // The image is left of the panel: what happens over it is the viewer's, not ImGui's.
+    const int image_right = int(float(settings_.width) * scale_);
+    switch (event.type) {
+        case SDL_QUIT:
+            quit_ = true;
+            break;
+        case SDL_KEYDOWN:
+            if (!io.WantCaptureKeyboard && !event.key.repeat) handle_key(event.key.keysym.sym);
+            break;
+        case SDL_MOUSEBUTTONDOWN:
+            if (event.button.x >= image_right) break;
+            left_ = left_ || event.button.button == SDL_BUTTON_LEFT;
+            middle_ = middle_ || event.button.button == SDL_BUTTON_MIDDLE;
+            right_ = right_ || event.button.button == SDL_BUTTON_RIGHT;
+            press_x_ = event.button.x;
+            press_y_ = event.button.y;
+            dragged_ = false;
+            break;
+        case SDL_MOUSEMOTION: {
+            if (!(left_ || middle_ || right_)) break;
+            const float dx = float(event.motion.xrel), dy = float(event.motion.yrel);
+            if (std::abs(event.motion.x - press_x_) > kClickSlop || std::abs(event.motion.y - press_y_) > kClickSlop)
+                dragged_ = true;
+            const bool pan = middle_ || (left_ && (SDL_GetModState() & KMOD_SHIFT));
+            if (pan) {
+                // A pixel of drag moves the target by a pixel's worth of the view at its distance.
+                const float view = 2.0f * std::tan(0.5f * radians(camera().vertical_fov()));
+                const float per_pixel = view / (float(settings_.height) * scale_);
+                orbit().pan(-dx * per_pixel, dy * per_pixel);
+            } else {
+                orbit().orbit(-dx * kOrbitPerPixel, dy * kOrbitPerPixel);
+            }
+            camera_changed(true);
+            break;
+        }
+        case SDL_MOUSEBUTTONUP: {
+            const bool was_left = event.button.button == SDL_BUTTON_LEFT && left_;
+            if (event.button.button == SDL_BUTTON_LEFT) left_ = false;
+            if (event.button.button == SDL_BUTTON_MIDDLE) middle_ = false;
+            if (event.button.button == SDL_BUTTON_RIGHT) right_ = false;
+            if (dragged_ && !(left_ || middle_ || right_)) {
+                camera_changed(false);  // at rest: refine
+                dragged_ = false;
+            } else if (was_left && !dragged_) {
+                explain_pixel(int(float(event.button.x) / scale_), int(float(event.button.y) / scale_));
+            }
+            break;
+        }
+        case SDL_MOUSEWHEEL:
+            if (event.wheel.mouseX >= image_right || event.wheel.y == 0) break;
+            orbit().dolly(std::pow(0.9f, float(event.wheel.y)));
+            camera_changed(false);
+            break;
+        default:
+            break;
+    }
+}
+
+void ViewerWindow::handle_key(SDL_Keycode key) {
+    if (right_) return;  // W, A, S, D fly while the right button is held (fly())
+    switch (key) {
+        case SDLK_ESCAPE:
+            quit_ = true;
+            break;
+        case SDLK_f:
+            orbit().frame(scene_.bounds());
+            camera_changed(false);
+            break;
+        case SDLK_r:
+            orbit_.reset();  // the scene's own camera, exactly
+            camera_changed(false);
+            break;
+        case SDLK_p:
+            fmt::print("{}", (orbit_ ? *orbit_ : initial_orbit()).toml());
+            break;
+        case SDLK_s:
+            save(options_.output);
+            break;
+        default:
+            break;
+    }
+    std::fflush(stdout);
+}
+
+void ViewerWindow::fly(float seconds) {
+    if (!right_) return;
+    const uint8_t* keys = SDL_GetKeyboardState(nullptr);
+    const float r = float(keys[SDL_SCANCODE_D]) - float(keys[SDL_SCANCODE_A]);
+    const float u = float(keys[SDL_SCANCODE_E]) - float(keys[SDL_SCANCODE_Q]);
+    const float f = float(keys[SDL_SCANCODE_W]) - float(keys[SDL_SCANCODE_S]);
+    if (r == 0.0f && u == 0.0f && f == 0.0f) return;
+    // Half the scene's size per second.
+    const float speed = 0.5f * std::max(length(scene_.bounds().diagonal()), 1e-3f) * std::min(seconds, 0.1f);
+    orbit().fly(r * speed, u * speed, f * speed);
+    dragged_ = true;  // refine when the button is released
+    camera_changed(true);
+}
+
+void ViewerWindow::explain_pixel(int x, int y) {
+    if (x < 0 || y < 0 || x >= int(settings_.width) || y >= int(settings_.height)) return;
+    const Camera view = camera();
+    explained_ = integrator_.explain(scene_, settings_, uint32_t(x), uint32_t(y), 0u, &view);
+    explanation_ = explanation_text(scene_, settings_, *explained_);
+    // ImGui's built-in font has no Σ or ×.
+    panel_text_ = explanation_;
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"Σ", "sum of"}, {"×", "x"}})
+        for (std::size_t at; (at = panel_text_.find(from)) != std::string::npos;)
+            panel_text_.replace(at, from.size(), to);
+    fmt::print("{}", explanation_);
+    std::fflush(stdout);
+}
+
+void ViewerWindow::save(const std::string& path) {
+    const std::shared_ptr<const Film> film = render_->accumulated();
+    if (!film) {
+        message_ = "nothing to save yet: no full-resolution pass has finished";
+    } else {
+        WriteOptions write_options;
+        write_options.exposure = options_.exposure;
+        try {
+            write_image(path, film->to_image(), write_options);
+            message_ = fmt::format("saved {} ({} spp)", path, render_->status().passes);
+        } catch (const std::exception& e) {
+            message_ = e.what();
+        }
+    }
+    fmt::print("{}\n", message_);
+    std::fflush(stdout);
+}
+
+void ViewerWindow::screenshot(const std::string& path) const {
+    int w = 0, h = 0;
+    SDL_GL_GetDrawableSize(window_, &w, &h);
+    std::vector<uint8_t> rgb(std::size_t(w) * std::size_t(h) * 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+    // The writer takes linear values and encodes them to sRGB: decode what the window shows.
+    Image image(w, h, 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const float v = float(rgb[(std::size_t(h - 1 - y) * w + x) * 3 + c]) / 255.0f;
+                image.at(x, y, c) = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            }
+    try {
+        write_image(path, image, WriteOptions{});
+        fmt::print("screenshot {}\n", path);
+    } catch (const std::exception& e) {
+        fmt::print("{}\n", e.what());
+    }
+    std::fflush(stdout);
+}
+
+void ViewerWindow::upload_newest() {
+    const std::shared_ptr<const Film> film = render_->newest(shown_version_);
+    if (!film) return;
+    const float gain = std::exp2(options_.exposure);
+    std::vector<uint8_t> rgba(std::size_t(film->width()) * film->height() * 4);
+    for (uint32_t y = 0; y < film->height(); ++y)
+        for (uint32_t x = 0; x < film->width(); ++x) {
+            const Color c = film->at(x, y) * gain;
+            uint8_t* p = &rgba[(std::size_t(y) * film->width() + x) * 4];
+            p[0] = srgb8(c.r);
+            p[1] = srgb8(c.g);
+            p[2] = srgb8(c.b);
+            p[3] = 255;
+        }
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, film->width() < settings_.width ? GL_NEAREST : GL_LINEAR);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, GLsizei(film->width()), GLsizei(film->height()), 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, rgba.data());
+}
+
+void ViewerWindow::draw_rays() const {
+    if (!explained_ || explained_->samples.empty() || !explained_->samples[0].tree) return;
+    const RayTree& tree = *explained_->samples[0].tree;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    // Drawn through the current camera, so the rays stay on the scene when the view moves.
+    const Camera view = camera();
+    auto on_screen = [&](const Vec3& p) -> std::optional<ImVec2> {
+        const auto q = view.project(p, int(settings_.width), int(settings_.height));
+        if (!q) return std::nullopt;
+        return ImVec2(q->x * scale_, q->y * scale_);
+    };
+    const float reach = 2.0f * std::max(length(scene_.bounds().diagonal()), 1.0f);
+    for (const RayTreeNode& node : tree.nodes()) {
+        const float t = (node.hit || node.kind == RayKind::Shadow) && std::isfinite(node.t) ? node.t : reach;
+        const auto a = on_screen(node.origin);
+        const auto b = on_screen(node.origin + node.direction * std::min(t, reach));
+        if (node.kind == RayKind::Camera) {
+            if (b) draw->AddCircle(*b, 5.0f, ray_colour(node), 0, 2.0f);
+        } else if (a && b) {
+            draw->AddLine(*a, *b, ray_colour(node), 2.0f);
+        }
+    }
+}
+
+void ViewerWindow::draw_panel() {
+    const float x = float(settings_.width) * scale_;
+    ImGui::SetNextWindowPos(ImVec2(x, 0));
+    ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), ImGui::GetIO().DisplaySize.y));
+    ImGui::Begin("glint", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    const ViewStatus status = render_->status();
+    if (status.preview)
+        ImGui::Text("preview (1/4 resolution, 1 spp)");
+    else
+        ImGui::Text("%u of %u spp%s", status.passes, status.total_passes,
+                    status.passes == status.total_passes ? ": converged" : "");
+    ImGui::Text("%.2f M rays/s, %s integrator", status.rays_per_second * 1e-6, settings_.integrator.c_str());
+    if (ImGui::Button("Frame (F)")) handle_key(SDLK_f);
+    ImGui::SameLine();
+    if (ImGui::Button("Reset (R)")) handle_key(SDLK_r);
+    ImGui::SameLine();
+    if (ImGui::Button("Camera (P)")) handle_key(SDLK_p);
+    ImGui::SameLine();
+    if (ImGui::Button("Save (S)")) handle_key(SDLK_s);
+    if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+    ImGui::Separator();
+    ImGui::TextWrapped(
+        "Left drag: orbit. Middle or shift + left drag: pan. Wheel: dolly. Right button + W A S D Q E: fly. "
+        "Click: explain the pixel.");
+    ImGui::Separator();
+    ImGui::BeginChild("explanation", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::TextUnformatted(explanation_.empty() ? "Click the image to see a pixel's rays." : panel_text_.c_str());
+    ImGui::EndChild();
+    ImGui::End();
+}
+
+void ViewerWindow::run_script() {
+    if (next_step_ >= options_.script.size()) return;
+    const ScriptStep& step = options_.script[next_step_];
+    const ViewStatus status = render_->status();
+    switch (step.kind) {
+        case ScriptStep::Kind::WaitConverged:
+            if (status.preview || status.passes < status.total_passes) return;
+            break;
+        case ScriptStep::Kind::WaitPasses:
+            if (status.preview || status.passes < uint32_t(step.a)) return;
+            break;
+        case ScriptStep::Kind::WaitFrames:
+            if (++frames_waited_ < step.a) return;
+            frames_waited_ = 0;
+            break;
+        case ScriptStep::Kind::Save:
+            save(step.text);
+            break;
+        case ScriptStep::Kind::Screenshot:
+            screenshot_path_ = step.text;
+            break;
+        case ScriptStep::Kind::Quit:
+            quit_ = true;
+            break;
+        default:
+            push_script_events(step);
+            break;
+    }
+    ++next_step_;
+}
+
+void ViewerWindow::push_script_events(const ScriptStep& step) {
+    auto push = [](SDL_Event e) { SDL_PushEvent(&e); };
+    auto button = [&](Uint32 type, Uint8 which, int x, int y) {
+        SDL_Event e{};
+        e.type = type;
+        e.button.button = which;
+        e.button.x = x;
+        e.button.y = y;
+        push(e);
+    };
+    const int cx = int(float(settings_.width) * scale_ * 0.5f), cy = int(float(settings_.height) * scale_ * 0.5f);
+    if (step.kind == ScriptStep::Kind::Key) {
+        SDL_Event e{};
+        e.type = SDL_KEYDOWN;
+        e.key.keysym.sym = SDL_GetKeyFromName(step.text.c_str());
+        push(e);
+        e.type = SDL_KEYUP;
+        push(e);
+    } else if (step.kind == ScriptStep::Kind::Drag) {
+        const Uint8 which = step.text == "left"     ? SDL_BUTTON_LEFT
+                            : step.text == "middle" ? SDL_BUTTON_MIDDLE
+                                                    : SDL_BUTTON_RIGHT;
+        button(SDL_MOUSEBUTTONDOWN, which, cx, cy);
+        SDL_Event e{};
+        e.type = SDL_MOUSEMOTION;
+        e.motion.x = cx + step.a;
+        e.motion.y = cy + step.b;
+        e.motion.xrel = step.a;
+        e.motion.yrel = step.b;
+        push(e);
+        button(SDL_MOUSEBUTTONUP, which, cx + step.a, cy + step.b);
+    } else if (step.kind == ScriptStep::Kind::Wheel) {
+        SDL_Event e{};
+        e.type = SDL_MOUSEWHEEL;
+        e.wheel.y = step.a;
+        push(e);
+    } else if (step.kind == ScriptStep::Kind::Click) {
+        const int x = int((float(step.a) + 0.5f) * scale_), y = int((float(step.b) + 0.5f) * scale_);
+        button(SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, x, y);
+        button(SDL_MOUSEBUTTONUP, SDL_BUTTON_LEFT, x, y);
+    }
+}
+
+}  // namespace glint::app

@@ -1,0 +1,94 @@
+#pragma once
+// The `glint view` window: SDL2 for the window and input, OpenGL 2 to show the image, Dear
+// ImGui for the side panel. It owns the interactive camera and hands every change to the
+// render thread (progressive_render.h).
+//
+// Controls: left drag orbits, middle drag (or shift + left) pans, the wheel dollies; hold the
+// right button to fly with W, A, S, D (and Q, E down and up) while the mouse turns the view;
+// F frames the scene, R returns to the scene's camera, P prints it as a [camera] table, S
+// saves the accumulated image, a left click explains the pixel under the mouse, Esc quits.
+
+#include "progressive_render.h"
+#include "session_script.h"
+
+#include "glint/integrators/ray_tree.h"
+#include "glint/scene/orbit_camera.h"
+
+#include <SDL.h>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace glint::app {
+
+struct ViewerOptions {
+    std::string output;
+    float exposure = 0.0f;
+    std::vector<ScriptStep> script;
+};
+
+class ViewerWindow {
+public:
+    ViewerWindow(const RenderScene& scene, const Integrator& integrator, const RenderSettings& settings,
+                 ViewerOptions options);
+    ~ViewerWindow();
+    ViewerWindow(const ViewerWindow&) = delete;
+    ViewerWindow& operator=(const ViewerWindow&) = delete;
+
+    /// Show the window until it is closed; returns the exit status.
+    int run();
+
+private:
+    [[nodiscard]] Camera camera() const;
+    /// The orbit that starts at the scene's camera.
+    [[nodiscard]] OrbitCamera initial_orbit() const;
+    /// The orbit camera, made from the scene's camera on the first move.
+    OrbitCamera& orbit();
+    void camera_changed(bool moving);
+
+    void handle(const SDL_Event& event);
+    void handle_key(SDL_Keycode key);
+    void fly(float seconds);
+    void run_script();
+    void push_script_events(const ScriptStep& step);
+
+    void explain_pixel(int x, int y);
+    void save(const std::string& path);
+    /// The window's pixels as drawn (before the buffer swap) to a PNG.
+    void screenshot(const std::string& path) const;
+    void upload_newest();
+    void draw_panel();
+    void draw_rays() const;
+
+    const RenderScene& scene_;
+    const Integrator& integrator_;
+    const RenderSettings settings_;
+    ViewerOptions options_;
+
+    SDL_Window* window_ = nullptr;
+    SDL_GLContext gl_ = nullptr;
+    unsigned texture_ = 0;
+    float scale_ = 1.0f;  ///< window pixels per image pixel
+
+    std::optional<OrbitCamera> orbit_;
+    std::unique_ptr<ProgressiveRender> render_;
+    uint64_t shown_version_ = 0;
+
+    // Mouse state, from events (scripted events do not move SDL's own cursor).
+    bool left_ = false, middle_ = false, right_ = false, dragged_ = false;
+    int press_x_ = 0, press_y_ = 0;
+
+    std::optional<PixelExplanation> explained_;
+    std::string explanation_, panel_text_;
+    std::string message_;
+
+    std::string screenshot_path_;
+    std::size_t next_step_ = 0;
+    int frames_waited_ = 0;
+    bool quit_ = false;
+};
+
+}  // namespace glint::app

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# `glint view` driven by scripted sessions in a virtual display (xvfb-run): the converged
+# image is `glint render`'s bit for bit, an orbit changes it and R brings it back exactly, P
+# prints a [camera] table, a click prints the pixel's ray tree, S saves, a screenshot shows
+# the window. Skips (exit 77) when the viewer is not built or xvfb-run is missing.
+#   viewer_session_test.sh GLINT SCENES_DIR
+set -uo pipefail
+glint=$1 scenes=$2
+# Without a display the command stops at once: with why it cannot open a window, or with why
+# this build has no viewer.
+if DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view 2>&1 | grep -q "built without the viewer"; then
+  echo "SKIP: this glint has no viewer (SDL2 or Dear ImGui missing, or GLINT_VIEWER=OFF)"; exit 77
+fi
+command -v xvfb-run > /dev/null || { echo "SKIP: xvfb-run not found (apt install xvfb)"; exit 77; }
+command -v idiff > /dev/null || { echo "SKIP: idiff not found (apt install openimageio-tools)"; exit 77; }
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+same() { idiff -fail 0 -warn 0 "$1" "$2" > /dev/null 2>&1; }
+settings=(--width 96 --height 72 --spp 4)
+scene="$scenes/spheres.toml"
+view() {  # view SCRIPT [options...]: run a session, its stdout in out.txt
+  local script=$1; shift
+  printf '%b' "$script" > session.txt
+  timeout 120 xvfb-run -a -s "-screen 0 1280x1024x24" "$glint" view "$scene" "${settings[@]}" --script session.txt "$@" \
+    > out.txt 2> err.txt
+}
+
+"$glint" render "$scene" "${settings[@]}" -q -o rendered.exr || fail "glint render"
+
+view 'wait converged\nsave converged.exr\nkey p\nclick 48 36\nkey s\nquit\n' -o keyed.exr
+[ $? -eq 0 ] || fail "session 1 exit status (stderr: $(cat err.txt))"
+same converged.exr rendered.exr || fail "the converged view differs from glint render"
+same keyed.exr rendered.exr || fail "S did not save the converged image to -o"
+grep -q '^\[camera\]$' out.txt && grep -q '^position = \[22, 24, 26\]$' out.txt || fail "P printed no [camera] table: $(cat out.txt)"
+grep -q '^pixel (48, 36) of 96×72, 4 spp, whitted integrator, seed 0$' out.txt || fail "the click printed no ray tree"
+grep -q '#0 camera ray: ' out.txt || fail "the ray tree has no camera ray"
+
+view 'wait converged\ndrag left 30 0\nwait converged\nsave orbited.exr\nkey r\nwait converged\nsave reset.exr\nwheel 3\nkey f\nwait passes 1\nscreenshot shot.png\nquit\n'
+[ $? -eq 0 ] || fail "session 2 exit status (stderr: $(cat err.txt))"
+same orbited.exr rendered.exr && fail "orbiting did not change the image"
+[ -f orbited.exr ] || fail "nothing saved after orbiting"
+same reset.exr rendered.exr || fail "R did not return to the scene's camera exactly"
+[ -s shot.png ] || fail "no screenshot"
+size=$(oiiotool --info shot.png 2>/dev/null | grep -o '[0-9]* x *[0-9]*' | head -1 | tr -s ' ')
+[ "$size" = "496 x 600" ] || fail "screenshot size '$size', expected the window, 496 x 600"
+
+printf 'wait converged\njump 3\n' > bad.txt
+timeout 60 "$glint" view "$scene" --script bad.txt > out.txt 2> err.txt
+[ $? -eq 1 ] || fail "a bad script should exit 1"
+grep -q "step 2 ('jump 3'): expected wait, key, drag" err.txt || fail "bad script message: $(cat err.txt)"
+
+[ $failures -eq 0 ] && echo "viewer sessions: all checks passed"
+exit $((failures > 0))
