@@ -1,5 +1,6 @@
 #include "session_script.h"
 
+#include <SDL.h>
 #include <fmt/core.h>
 
 #include <charconv>
@@ -77,6 +78,49 @@ std::vector<ScriptStep> parse_session_script(const std::string& script) {
         steps.push_back(std::move(s));
     }
     return steps;
+}
+
+void push_script_events(const ScriptStep& step, int centre_x, int centre_y, float scale) {
+    auto push = [](SDL_Event e) { SDL_PushEvent(&e); };
+    auto button = [&](Uint32 type, Uint8 which, int x, int y) {
+        SDL_Event e{};
+        e.type = type;
+        e.button.button = which;
+        e.button.x = x;
+        e.button.y = y;
+        push(e);
+    };
+    const int cx = centre_x, cy = centre_y;
+    if (step.kind == ScriptStep::Kind::Key) {
+        SDL_Event e{};
+        e.type = SDL_KEYDOWN;
+        e.key.keysym.sym = SDL_GetKeyFromName(step.text.c_str());
+        push(e);
+        e.type = SDL_KEYUP;
+        push(e);
+    } else if (step.kind == ScriptStep::Kind::Drag) {
+        const Uint8 which = step.text == "left"     ? SDL_BUTTON_LEFT
+                            : step.text == "middle" ? SDL_BUTTON_MIDDLE
+                                                    : SDL_BUTTON_RIGHT;
+        button(SDL_MOUSEBUTTONDOWN, which, cx, cy);
+        SDL_Event e{};
+        e.type = SDL_MOUSEMOTION;
+        e.motion.x = cx + step.a;
+        e.motion.y = cy + step.b;
+        e.motion.xrel = step.a;
+        e.motion.yrel = step.b;
+        push(e);
+        button(SDL_MOUSEBUTTONUP, which, cx + step.a, cy + step.b);
+    } else if (step.kind == ScriptStep::Kind::Wheel) {
+        SDL_Event e{};
+        e.type = SDL_MOUSEWHEEL;
+        e.wheel.y = step.a;
+        push(e);
+    } else if (step.kind == ScriptStep::Kind::Click) {
+        const int x = int((float(step.a) + 0.5f) * scale), y = int((float(step.b) + 0.5f) * scale);
+        button(SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, x, y);
+        button(SDL_MOUSEBUTTONUP, SDL_BUTTON_LEFT, x, y);
+    }
 }
 
 }  // namespace glint::app

@@ -30,4 +30,9 @@ struct ScriptStep {
 /// for a step it cannot read.
 [[nodiscard]] std::vector<ScriptStep> parse_session_script(const std::string& script);
 
+/// Queue the SDL events a user would cause for a key, drag, wheel or click step: drags start
+/// at window point (centre_x, centre_y), clicks land on the centre of image pixel (X, Y) of an
+/// image shown `scale` window pixels per image pixel.
+void push_script_events(const ScriptStep& step, int centre_x, int centre_y, float scale);
+
 }  // namespace glint::app

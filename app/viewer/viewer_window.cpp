@@ -1,6 +1,7 @@
 #include "viewer_window.h"
 
 #include "../explanation_format.h"
+#include "screenshot.h"
 
 #include "glint/image/image_io.h"
 #include "glint/math/constants.h"
@@ -146,7 +147,7 @@ int ViewerWindow::run() {
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
         if (!screenshot_path_.empty()) {
-            screenshot(screenshot_path_);
+            write_screenshot(window_, screenshot_path_);
             screenshot_path_.clear();
         }
         SDL_GL_SwapWindow(window_);
@@ -287,29 +288,6 @@ void ViewerWindow::save(const std::string& path) {
     std::fflush(stdout);
 }
 
-void ViewerWindow::screenshot(const std::string& path) const {
-    int w = 0, h = 0;
-    SDL_GL_GetDrawableSize(window_, &w, &h);
-    std::vector<uint8_t> rgb(std::size_t(w) * std::size_t(h) * 3);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
-    // The writer takes linear values and encodes them to sRGB: decode what the window shows.
-    Image image(w, h, 3);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 3; ++c) {
-                const float v = float(rgb[(std::size_t(h - 1 - y) * w + x) * 3 + c]) / 255.0f;
-                image.at(x, y, c) = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-            }
-    try {
-        write_image(path, image, WriteOptions{});
-        fmt::print("screenshot {}\n", path);
-    } catch (const std::exception& e) {
-        fmt::print("{}\n", e.what());
-    }
-    std::fflush(stdout);
-}
-
 void ViewerWindow::upload_newest() {
     const std::shared_ptr<const Film> film = render_->newest(shown_version_);
     if (!film) return;
@@ -412,53 +390,11 @@ void ViewerWindow::run_script() {
             quit_ = true;
             break;
         default:
-            push_script_events(step);
+            push_script_events(step, int(float(settings_.width) * scale_ * 0.5f),
+                               int(float(settings_.height) * scale_ * 0.5f), scale_);
             break;
     }
     ++next_step_;
-}
-
-void ViewerWindow::push_script_events(const ScriptStep& step) {
-    auto push = [](SDL_Event e) { SDL_PushEvent(&e); };
-    auto button = [&](Uint32 type, Uint8 which, int x, int y) {
-        SDL_Event e{};
-        e.type = type;
-        e.button.button = which;
-        e.button.x = x;
-        e.button.y = y;
-        push(e);
-    };
-    const int cx = int(float(settings_.width) * scale_ * 0.5f), cy = int(float(settings_.height) * scale_ * 0.5f);
-    if (step.kind == ScriptStep::Kind::Key) {
-        SDL_Event e{};
-        e.type = SDL_KEYDOWN;
-        e.key.keysym.sym = SDL_GetKeyFromName(step.text.c_str());
-        push(e);
-        e.type = SDL_KEYUP;
-        push(e);
-    } else if (step.kind == ScriptStep::Kind::Drag) {
-        const Uint8 which = step.text == "left"     ? SDL_BUTTON_LEFT
-                            : step.text == "middle" ? SDL_BUTTON_MIDDLE
-                                                    : SDL_BUTTON_RIGHT;
-        button(SDL_MOUSEBUTTONDOWN, which, cx, cy);
-        SDL_Event e{};
-        e.type = SDL_MOUSEMOTION;
-        e.motion.x = cx + step.a;
-        e.motion.y = cy + step.b;
-        e.motion.xrel = step.a;
-        e.motion.yrel = step.b;
-        push(e);
-        button(SDL_MOUSEBUTTONUP, which, cx + step.a, cy + step.b);
-    } else if (step.kind == ScriptStep::Kind::Wheel) {
-        SDL_Event e{};
-        e.type = SDL_MOUSEWHEEL;
-        e.wheel.y = step.a;
-        push(e);
-    } else if (step.kind == ScriptStep::Kind::Click) {
-        const int x = int((float(step.a) + 0.5f) * scale_), y = int((float(step.b) + 0.5f) * scale_);
-        button(SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, x, y);
-        button(SDL_MOUSEBUTTONUP, SDL_BUTTON_LEFT, x, y);
-    }
 }
 
 }  // namespace glint::app

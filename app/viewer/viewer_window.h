@@ -53,12 +53,9 @@ private:
     void handle_key(SDL_Keycode key);
     void fly(float seconds);
     void run_script();
-    void push_script_events(const ScriptStep& step);
 
     void explain_pixel(int x, int y);
     void save(const std::string& path);
-    /// The window's pixels as drawn (before the buffer swap) to a PNG.
-    void screenshot(const std::string& path) const;
     void upload_newest();
     void draw_panel();
     void draw_rays() const;
