@@ -25,6 +25,8 @@ void add_view_options(CLI::App* cmd, ViewOptions& opt) {
     cmd->add_option("--exposure", opt.exposure, "Exposure in stops for the window and PNG output");
     cmd->add_option("--script", opt.script, "Run a scripted session from this file (for tests and demos)")
         ->check(CLI::ExistingFile);
+    cmd->add_option("--benchmark", opt.benchmark,
+                    "Orbit for N frames, then render to convergence; print frames/s and the time, and close");
     add_render_overrides(cmd, opt.overrides);
     add_scene_options(cmd, opt.scene);
 }
@@ -50,6 +52,8 @@ int run_view(const ViewOptions& opt) {
         output =
             opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
     check_output_path(output);
+    const int benchmark =
+        opt.benchmark ? int(in_range("--benchmark", *opt.benchmark, 1, 100000, "a frame count from 1 to 100000")) : 0;
     std::vector<ScriptStep> script;
     if (opt.script) {
         std::ifstream in(*opt.script);
@@ -61,7 +65,7 @@ int run_view(const ViewOptions& opt) {
     apply_overrides(opt.overrides, s);
     const RenderScene scene(std::move(source.loaded.scene));
     const std::unique_ptr<Integrator> integrator = make_integrator(s);
-    ViewerWindow window(scene, *integrator, s, ViewerOptions{output, opt.exposure, std::move(script)});
+    ViewerWindow window(scene, *integrator, s, ViewerOptions{output, opt.exposure, std::move(script), benchmark});
     return window.run();
 #endif
 }

@@ -20,6 +20,8 @@ struct ViewOptions {
     float exposure = 0.0f;
     /// A scripted session (viewer/session_script.h), read from this file.
     std::optional<std::string> script;
+    /// Orbit for this many frames, then render to convergence; print frames/s and the time.
+    std::optional<int64_t> benchmark;
 };
 
 void add_view_options(CLI::App* command, ViewOptions& options);

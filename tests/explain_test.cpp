@@ -3,10 +3,12 @@
 #include "cli_runner.h"
 
 #include "glint/image/image_io.h"
+#include "glint/math/vec3.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -99,6 +101,76 @@ TEST(Explain, PathValueIsTheRenderedPixelAndTheRaysAddUp) {
                                             "--width 40 --height 40 --spp 4 --integrator path --depth 4");
     EXPECT_GT(kinds.count("bounce") ? kinds.at("bounce") : 0, 0);
     EXPECT_GT(kinds.count("shadow") ? kinds.at("shadow") : 0, 0);
+}
+
+TEST(Explain, MirrorSphereUnderAPointLightGivesTheFormulasTree) {
+    const fs::path dir = glint_test::temp_dir();
+    // Half mirror, half Lambert, lit by a point light beside the camera: the camera ray hits
+    // at t = |eye − p|, its shadow ray brings kd·I·cos θ / d², and its reflection (factor kr)
+    // sees the background.
+    glint_test::write_file(dir / "mirror.toml", R"([render]
+width = 9
+height = 9
+max_depth = 1
+[camera]
+position = [0, 0, 5]
+look_at = [0, 0, 0]
+fov = 20
+[background]
+color = [0.2, 0.3, 0.4]
+[world]
+ambient_light = 0
+[[materials]]
+name = "half mirror"
+diffuse = 0.5
+reflectivity = 0.5
+[[lights]]
+type = "point"
+position = [0, 3, 5]
+intensity = 10
+falloff = "inverse_square"
+[[objects]]
+name = "ball"
+type = "sphere"
+center = [0, 0, 0]
+radius = 1
+material = "half mirror"
+)");
+    const fs::path exr = dir / "mirror.exr";
+    ASSERT_EQ(run_cli(kCli, "render " + (dir / "mirror.toml").string() + " -q -o " + exr.string(), dir).exit_code, 0);
+    const glint::Image image = glint::read_image(exr);
+    const json e = explain_json((dir / "mirror.toml").string() + " --pixel 4,4", dir);
+    const json& rays = e.at("samples").at(0).at("rays");
+    ASSERT_EQ(rays.size(), 3u) << rays.dump(1);
+    const json &camera = rays[0], &shadow = rays[1], &reflection = rays[2];
+    EXPECT_EQ(camera.at("kind"), "camera");
+    EXPECT_EQ(shadow.at("kind"), "shadow");
+    EXPECT_EQ(reflection.at("kind"), "reflection");
+    EXPECT_EQ(shadow.at("parent"), 0);
+    EXPECT_EQ(reflection.at("parent"), 0);
+    // Where the camera ray meets the sphere, from the ray itself.
+    auto vec = [](const json& j) { return glint::Vec3(j[0].get<float>(), j[1].get<float>(), j[2].get<float>()); };
+    const glint::Vec3 origin = vec(camera.at("origin")), direction = vec(camera.at("direction"));
+    const float b = glint::dot(origin, direction), c = glint::dot(origin, origin) - 1.0f;
+    const float t = -b - std::sqrt(b * b - c);
+    EXPECT_NEAR(camera.at("hit").at("t").get<float>(), t, 1e-4f);
+    const glint::Vec3 p = origin + direction * t, n = glint::normalize(p);
+    EXPECT_NEAR(glint::dot(vec(camera.at("hit").at("normal")), n), 1.0f, 1e-5f);
+    EXPECT_EQ(shadow.at("blocked"), false);
+    EXPECT_EQ(shadow.at("light").at("type"), "point");
+    const glint::Vec3 to_light = glint::Vec3(0, 3, 5) - p;
+    const float expected_direct = 0.5f * 10.0f * glint::dot(n, glint::normalize(to_light)) / glint::dot(to_light, to_light);
+    EXPECT_NEAR(shadow.at("contribution")[0].get<float>(), expected_direct, 1e-5f);
+    EXPECT_FLOAT_EQ(reflection.at("factor")[0].get<float>(), 0.5f);
+    EXPECT_TRUE(reflection.at("hit").is_null());
+    for (int ch = 0; ch < 3; ++ch) {
+        const float background = std::array{0.2f, 0.3f, 0.4f}[ch];
+        EXPECT_NEAR(reflection.at("contribution")[ch].get<float>(), 0.5f * background, 1e-6f);
+        EXPECT_NEAR(camera.at("contribution")[ch].get<float>(), 0.0f, 1e-7f) << "no ambient light";
+        const float sum = shadow.at("contribution")[ch].get<float>() + reflection.at("contribution")[ch].get<float>();
+        EXPECT_NEAR(sum, image.at(4, 4, ch), 1e-6f) << "the rays add up to the rendered pixel (1 spp, box filter)";
+    }
+    fs::remove_all(dir);
 }
 
 TEST(Explain, GlassSplitsByFresnelsReflectance) {

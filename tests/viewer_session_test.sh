@@ -8,7 +8,12 @@ set -uo pipefail
 glint=$1 scenes=$2
 # Without a display the command stops at once: with why it cannot open a window, or with why
 # this build has no viewer.
-if DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view 2>&1 | grep -q "built without the viewer"; then
+if timeout 120 xvfb-run -a -s "-screen 0 1280x1024x24" "$glint" view "$scene" "${settings[@]}" --benchmark 5 > out.txt 2> err.txt \
+  || fail "--benchmark: $(cat err.txt)"
+grep -q '^orbiting: 5 frames in .* frames/s' out.txt && grep -q '^at rest: converged 96x72 at 4 spp in ' out.txt \
+  || fail "--benchmark printed: $(cat out.txt)"
+
+DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view 2>&1 | grep -q "built without the viewer"; then
   echo "SKIP: this glint has no viewer (SDL2 or Dear ImGui missing, or GLINT_VIEWER=OFF)"; exit 77
 fi
 command -v xvfb-run > /dev/null || { echo "SKIP: xvfb-run not found (apt install xvfb)"; exit 77; }
@@ -47,6 +52,30 @@ same reset.exr rendered.exr || fail "R did not return to the scene's camera exac
 [ -s shot.png ] || fail "no screenshot"
 size=$(oiiotool --info shot.png 2>/dev/null | grep -o '[0-9]* x *[0-9]*' | head -1 | tr -s ' ')
 [ "$size" = "496 x 600" ] || fail "screenshot size '$size', expected the window, 496 x 600"
+
+# Orbit, stop, let it converge; the camera P prints, pasted into the scene file, renders what
+# the viewer saved and what its window showed: the 7 printed digits move a few edge pixels
+# (36 of 6912 by up to 0.035 when written), a wrong camera moves most.
+view 'drag left 40 -15\nwait converged\nkey p\nsave orbit_view.exr\nsave orbit_view.png\nscreenshot orbit_window.png\nquit\n'
+[ $? -eq 0 ] || fail "session 3 exit status (stderr: $(cat err.txt))"
+{ sed -n '/^\[camera\]$/,/^fov = /p' out.txt; awk '/^\[camera\]/{skip=1; next} /^\[/{skip=0} !skip' "$scene"; } > printed_camera.toml
+"$glint" render printed_camera.toml "${settings[@]}" -q -o printed.exr && "$glint" render printed_camera.toml "${settings[@]}" -q -o printed.png \
+  || fail "the printed camera does not make a scene: $(head -8 printed_camera.toml)"
+idiff -fail 0.05 -failpercent 1 -warn 0.05 -warnpercent 100 orbit_view.exr printed.exr > /dev/null 2>&1 \
+  || fail "the saved view differs from glint render of the printed camera: $(idiff orbit_view.exr printed.exr | tail -3)"
+oiiotool orbit_window.png --cut 96x72+0+0 -o window_image.png > /dev/null 2>&1
+idiff -fail 0.06 -failpercent 1 -warn 0.06 -warnpercent 100 window_image.png printed.png > /dev/null 2>&1 \
+  || fail "the window shows something else than glint render of the printed camera: $(idiff window_image.png printed.png | tail -3)"
+same orbit_view.exr rendered.exr && fail "the orbit in session 3 did not move the camera"
+
+DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view "$scene" > out.txt 2> err.txt
+[ $? -eq 1 ] || fail "without a display glint view should exit 1"
+[ "$(wc -l < err.txt)" -eq 1 ] && grep -q "no display" err.txt || fail "without a display: $(cat err.txt)"
+
+printf 'key f\nkey shift\n' > bad_key.txt
+timeout 60 "$glint" view "$scene" --script bad_key.txt > out.txt 2> err.txt
+[ $? -eq 1 ] || fail "an unknown key should exit 1"
+grep -q "step 2 ('key shift'): expected key NAME, a letter or escape" err.txt || fail "unknown key message: $(cat err.txt)"
 
 printf 'wait converged\njump 3\n' > bad.txt
 timeout 60 "$glint" view "$scene" --script bad.txt > out.txt 2> err.txt

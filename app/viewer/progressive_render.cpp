@@ -47,6 +47,11 @@ std::shared_ptr<const Film> ProgressiveRender::accumulated() const {
     return accumulated_;
 }
 
+uint64_t ProgressiveRender::newest_version() const {
+    const std::lock_guard lock(mutex_);
+    return version_;
+}
+
 ViewStatus ProgressiveRender::status() const {
     const std::lock_guard lock(mutex_);
     return status_;

@@ -50,6 +50,8 @@ public:
     /// The full-resolution film of the passes finished so far (null before the first).
     [[nodiscard]] std::shared_ptr<const Film> accumulated() const;
     [[nodiscard]] ViewStatus status() const;
+    /// Counts the images published so far (coarse and full).
+    [[nodiscard]] uint64_t newest_version() const;
 
 private:
     void run();

@@ -3,6 +3,7 @@
 #include <SDL.h>
 #include <fmt/core.h>
 
+#include <cctype>
 #include <charconv>
 #include <sstream>
 #include <stdexcept>
@@ -52,7 +53,10 @@ std::vector<ScriptStep> parse_session_script(const std::string& script) {
             } else {
                 throw fail("wait converged, wait passes N or wait frames N");
             }
-        } else if (verb == "key" && w.size() == 2) {
+        } else if (verb == "key") {
+            // The keys the viewer answers to: letters (F, R, P, S, and W A S D Q E to fly) and Escape.
+            const bool letter = w.size() == 2 && w[1].size() == 1 && std::isalpha(static_cast<unsigned char>(w[1][0]));
+            if (!letter && !(w.size() == 2 && w[1] == "escape")) throw fail("key NAME, a letter or escape");
             s.kind = ScriptStep::Kind::Key;
             s.text = w[1];
         } else if (verb == "drag" && w.size() == 4 && (w[1] == "left" || w[1] == "middle" || w[1] == "right")) {

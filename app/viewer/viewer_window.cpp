@@ -130,6 +130,7 @@ int ViewerWindow::run() {
         fly(float(double(now - last) / double(SDL_GetPerformanceFrequency())));
         last = now;
         run_script();
+        if (options_.benchmark_frames > 0) run_benchmark();
         upload_newest();
 
         ImGui_ImplOpenGL2_NewFrame();
@@ -363,6 +364,39 @@ void ViewerWindow::draw_panel() {
     ImGui::TextUnformatted(explanation_.empty() ? "Click the image to see a pixel's rays." : panel_text_.c_str());
     ImGui::EndChild();
     ImGui::End();
+}
+
+void ViewerWindow::run_benchmark() {
+    const double frequency = double(SDL_GetPerformanceFrequency());
+    const uint64_t now = SDL_GetPerformanceCounter();
+    if (benchmark_.frame == 0) benchmark_.start = now;
+    if (benchmark_.frame < options_.benchmark_frames) {
+        // A full turn over the frames, as a steady drag would make it.
+        orbit().orbit(2.0f * kPi / float(options_.benchmark_frames), 0.0f);
+        camera_changed(true);
+        if (render_->newest_version() != benchmark_.seen_version) {
+            benchmark_.seen_version = render_->newest_version();
+            ++benchmark_.images;
+        }
+        ++benchmark_.frame;
+        return;
+    }
+    if (benchmark_.frame == options_.benchmark_frames) {
+        const double seconds = double(now - benchmark_.start) / frequency;
+        fmt::print("orbiting: {} frames in {:.2f} s, {:.1f} frames/s, {:.1f} new coarse images/s ({}x{})\n",
+                   benchmark_.frame, seconds, benchmark_.frame / seconds, double(benchmark_.images) / seconds,
+                   std::max(1u, settings_.width / 4), std::max(1u, settings_.height / 4));
+        camera_changed(false);
+        benchmark_.converge_start = now;
+        ++benchmark_.frame;
+        return;
+    }
+    const ViewStatus status = render_->status();
+    if (status.preview || status.passes < status.total_passes) return;
+    fmt::print("at rest: converged {}x{} at {} spp in {:.2f} s\n", settings_.width, settings_.height,
+               status.total_passes, double(now - benchmark_.converge_start) / frequency);
+    std::fflush(stdout);
+    quit_ = true;
 }
 
 void ViewerWindow::run_script() {

@@ -28,6 +28,9 @@ struct ViewerOptions {
     std::string output;
     float exposure = 0.0f;
     std::vector<ScriptStep> script;
+    /// Measure instead of waiting for a user: orbit for this many frames, then time the
+    /// render to convergence, print both and close.
+    int benchmark_frames = 0;
 };
 
 class ViewerWindow {
@@ -53,6 +56,8 @@ private:
     void handle_key(SDL_Keycode key);
     void fly(float seconds);
     void run_script();
+    /// One frame of --benchmark: orbit a step, or once the frames are done wait for convergence.
+    void run_benchmark();
 
     void explain_pixel(int x, int y);
     void save(const std::string& path);
@@ -86,6 +91,13 @@ private:
     std::size_t next_step_ = 0;
     int frames_waited_ = 0;
     bool quit_ = false;
+
+    struct Benchmark {
+        int frame = 0;
+        uint64_t images = 0;  ///< new images shown while orbiting
+        uint64_t seen_version = 0;
+        uint64_t start = 0, converge_start = 0;
+    } benchmark_;
 };
 
 }  // namespace glint::app
