@@ -72,6 +72,19 @@ DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view "$scene" > o
 [ $? -eq 1 ] || fail "without a display glint view should exit 1"
 [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "no display" err.txt || fail "without a display: $(cat err.txt)"
 
+# Heatmaps: computed at rest, printed with their range, shown instead of the image.
+view 'wait converged\nscreenshot image.png\nshow nodes\nwait frames 2\nscreenshot nodes.png\nshow shadow\nwait frames 2\nshow image\nwait frames 2\nscreenshot image_again.png\nquit\n'
+[ $? -eq 0 ] || fail "heatmap session exit status (stderr: $(cat err.txt))"
+grep -Eq '^heatmap BVH nodes visited: 0 to [1-9][0-9]*$' out.txt || fail "no nodes heatmap: $(cat out.txt)"
+grep -Eq '^heatmap shadow rays: 0 to [1-9][0-9]*$' out.txt || fail "no shadow-ray heatmap: $(cat out.txt)"
+same image.png nodes.png && fail "the nodes heatmap looks like the image"
+same image.png image_again.png || fail "show image did not bring the image back"
+
+printf 'show colours\n' > bad_show.txt
+timeout 60 "$glint" view "$scene" --script bad_show.txt > out.txt 2> err.txt
+[ $? -eq 1 ] && grep -q "step 1 ('show colours'): expected show image, nodes, primitives, shadow or depth" err.txt \
+  || fail "unknown view: $(cat err.txt)"
+
 printf 'key f\nkey shift\n' > bad_key.txt
 timeout 60 "$glint" view "$scene" --script bad_key.txt > out.txt 2> err.txt
 [ $? -eq 1 ] || fail "an unknown key should exit 1"

@@ -71,13 +71,19 @@ std::vector<ScriptStep> parse_session_script(const std::string& script) {
             s.kind = ScriptStep::Kind::Click;
             s.a = integer(1, "click X Y");
             s.b = integer(2, "click X Y");
+        } else if (verb == "show") {
+            if (w.size() != 2 ||
+                (w[1] != "image" && w[1] != "nodes" && w[1] != "primitives" && w[1] != "shadow" && w[1] != "depth"))
+                throw fail("show image, nodes, primitives, shadow or depth");
+            s.kind = ScriptStep::Kind::Show;
+            s.text = w[1];
         } else if ((verb == "save" || verb == "screenshot") && w.size() == 2) {
             s.kind = verb == "save" ? ScriptStep::Kind::Save : ScriptStep::Kind::Screenshot;
             s.text = w[1];
         } else if (verb == "quit" && w.size() == 1) {
             s.kind = ScriptStep::Kind::Quit;
         } else {
-            throw fail("wait, key, drag, wheel, click, save, screenshot or quit with their arguments");
+            throw fail("wait, key, drag, wheel, click, show, save, screenshot or quit with their arguments");
         }
         steps.push_back(std::move(s));
     }

@@ -9,6 +9,7 @@
 //   drag BUTTON DX DY     left, middle or right button, from the image centre, in pixels
 //   wheel N               N notches (negative: towards the user)
 //   click X Y             left click on image pixel (X, Y)
+//   show VIEW             image, or a heatmap: nodes, primitives, shadow, depth
 //   save PATH             write the accumulated image (EXR/PNG by extension)
 //   screenshot PATH       write the window as it shows (PNG)
 //   quit                  close the window
@@ -20,7 +21,7 @@
 namespace glint::app {
 
 struct ScriptStep {
-    enum class Kind { WaitConverged, WaitPasses, WaitFrames, Key, Drag, Wheel, Click, Save, Screenshot, Quit };
+    enum class Kind { WaitConverged, WaitPasses, WaitFrames, Key, Drag, Wheel, Click, Show, Save, Screenshot, Quit };
     Kind kind = Kind::Quit;
     std::string text;  ///< key name, button name or path
     int32_t a = 0, b = 0;

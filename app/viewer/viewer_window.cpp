@@ -1,6 +1,7 @@
 #include "viewer_window.h"
 
 #include "../explanation_format.h"
+#include "heatmap.h"
 #include "screenshot.h"
 
 #include "glint/image/image_io.h"
@@ -22,32 +23,8 @@ namespace glint::app {
 
 namespace {
 
-constexpr int kPanelWidth = 400;
 constexpr float kOrbitPerPixel = 0.008f;  // radians
 constexpr int kClickSlop = 3;             // pixels a click may move and stay a click
-
-/// IEC 61966-2-1 sRGB encoding of a linear value, to 8 bits.
-uint8_t srgb8(float linear) {
-    const float v = std::clamp(linear, 0.0f, 1.0f);
-    const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-    return uint8_t(std::lround(encoded * 255.0f));
-}
-
-ImU32 ray_colour(const RayTreeNode& node) {
-    switch (node.kind) {
-        case RayKind::Camera:
-            return IM_COL32(255, 255, 255, 255);
-        case RayKind::Reflection:
-            return IM_COL32(80, 220, 255, 255);
-        case RayKind::Refraction:
-            return IM_COL32(120, 255, 120, 255);
-        case RayKind::Shadow:
-            return node.blocked ? IM_COL32(255, 70, 70, 255) : IM_COL32(255, 230, 80, 255);
-        case RayKind::Bounce:
-            return IM_COL32(255, 160, 60, 255);
-    }
-    return IM_COL32(255, 255, 255, 255);
-}
 
 }  // namespace
 
@@ -117,7 +94,10 @@ OrbitCamera& ViewerWindow::orbit() {
     return *orbit_;
 }
 
-void ViewerWindow::camera_changed(bool moving) { render_->restart(camera(), moving); }
+void ViewerWindow::camera_changed(bool moving) {
+    render_->restart(camera(), moving);
+    cost_map_stale_ = true;
+}
 
 int ViewerWindow::run() {
     uint64_t last = SDL_GetPerformanceCounter();
@@ -131,7 +111,7 @@ int ViewerWindow::run() {
         last = now;
         run_script();
         if (options_.benchmark_frames > 0) run_benchmark();
-        upload_newest();
+        update_texture();
 
         ImGui_ImplOpenGL2_NewFrame();
         ImGui_ImplSDL2_NewFrame();
@@ -289,83 +269,6 @@ void ViewerWindow::save(const std::string& path) {
     std::fflush(stdout);
 }
 
-void ViewerWindow::upload_newest() {
-    const std::shared_ptr<const Film> film = render_->newest(shown_version_);
-    if (!film) return;
-    const float gain = std::exp2(options_.exposure);
-    std::vector<uint8_t> rgba(std::size_t(film->width()) * film->height() * 4);
-    for (uint32_t y = 0; y < film->height(); ++y)
-        for (uint32_t x = 0; x < film->width(); ++x) {
-            const Color c = film->at(x, y) * gain;
-            uint8_t* p = &rgba[(std::size_t(y) * film->width() + x) * 4];
-            p[0] = srgb8(c.r);
-            p[1] = srgb8(c.g);
-            p[2] = srgb8(c.b);
-            p[3] = 255;
-        }
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, film->width() < settings_.width ? GL_NEAREST : GL_LINEAR);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, GLsizei(film->width()), GLsizei(film->height()), 0, GL_RGBA,
-                 GL_UNSIGNED_BYTE, rgba.data());
-}
-
-void ViewerWindow::draw_rays() const {
-    if (!explained_ || explained_->samples.empty() || !explained_->samples[0].tree) return;
-    const RayTree& tree = *explained_->samples[0].tree;
-    ImDrawList* draw = ImGui::GetForegroundDrawList();
-    // Drawn through the current camera, so the rays stay on the scene when the view moves.
-    const Camera view = camera();
-    auto on_screen = [&](const Vec3& p) -> std::optional<ImVec2> {
-        const auto q = view.project(p, int(settings_.width), int(settings_.height));
-        if (!q) return std::nullopt;
-        return ImVec2(q->x * scale_, q->y * scale_);
-    };
-    const float reach = 2.0f * std::max(length(scene_.bounds().diagonal()), 1.0f);
-    for (const RayTreeNode& node : tree.nodes()) {
-        const float t = (node.hit || node.kind == RayKind::Shadow) && std::isfinite(node.t) ? node.t : reach;
-        const auto a = on_screen(node.origin);
-        const auto b = on_screen(node.origin + node.direction * std::min(t, reach));
-        if (node.kind == RayKind::Camera) {
-            if (b) draw->AddCircle(*b, 5.0f, ray_colour(node), 0, 2.0f);
-        } else if (a && b) {
-            draw->AddLine(*a, *b, ray_colour(node), 2.0f);
-        }
-    }
-}
-
-void ViewerWindow::draw_panel() {
-    const float x = float(settings_.width) * scale_;
-    ImGui::SetNextWindowPos(ImVec2(x, 0));
-    ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), ImGui::GetIO().DisplaySize.y));
-    ImGui::Begin("glint", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    const ViewStatus status = render_->status();
-    if (status.preview)
-        ImGui::Text("preview (1/4 resolution, 1 spp)");
-    else
-        ImGui::Text("%u of %u spp%s", status.passes, status.total_passes,
-                    status.passes == status.total_passes ? ": converged" : "");
-    ImGui::Text("%.2f M rays/s, %s integrator", status.rays_per_second * 1e-6, settings_.integrator.c_str());
-    if (ImGui::Button("Frame (F)")) handle_key(SDLK_f);
-    ImGui::SameLine();
-    if (ImGui::Button("Reset (R)")) handle_key(SDLK_r);
-    ImGui::SameLine();
-    if (ImGui::Button("Camera (P)")) handle_key(SDLK_p);
-    ImGui::SameLine();
-    if (ImGui::Button("Save (S)")) handle_key(SDLK_s);
-    if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
-    ImGui::Separator();
-    ImGui::TextWrapped(
-        "Left drag: orbit. Middle or shift + left drag: pan. Wheel: dolly. Right button + W A S D Q E: fly. "
-        "Click: explain the pixel.");
-    ImGui::Separator();
-    ImGui::BeginChild("explanation", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
-    ImGui::TextUnformatted(explanation_.empty() ? "Click the image to see a pixel's rays." : panel_text_.c_str());
-    ImGui::EndChild();
-    ImGui::End();
-}
-
 void ViewerWindow::run_benchmark() {
     const double frequency = double(SDL_GetPerformanceFrequency());
     const uint64_t now = SDL_GetPerformanceCounter();
@@ -416,6 +319,9 @@ void ViewerWindow::run_script() {
             break;
         case ScriptStep::Kind::Save:
             save(step.text);
+            break;
+        case ScriptStep::Kind::Show:
+            show(cost_kind_from_view_name(step.text));
             break;
         case ScriptStep::Kind::Screenshot:
             screenshot_path_ = step.text;

@@ -11,6 +11,7 @@
 #include "progressive_render.h"
 #include "session_script.h"
 
+#include "glint/integrators/cost_map.h"
 #include "glint/integrators/ray_tree.h"
 #include "glint/scene/orbit_camera.h"
 
@@ -45,6 +46,9 @@ public:
     int run();
 
 private:
+    /// Width of the side panel, right of the image, in window pixels.
+    static constexpr int kPanelWidth = 400;
+
     [[nodiscard]] Camera camera() const;
     /// The orbit that starts at the scene's camera.
     [[nodiscard]] OrbitCamera initial_orbit() const;
@@ -62,6 +66,11 @@ private:
     void explain_pixel(int x, int y);
     void save(const std::string& path);
     void upload_newest();
+    void upload_rgba(const std::vector<uint8_t>& rgba, uint32_t width, uint32_t height) const;
+    /// Show the image (none) or a heatmap of `kind`.
+    void show(std::optional<CostKind> kind);
+    /// The texture for this frame: the newest image, or the heatmap once the camera rests.
+    void update_texture();
     void draw_panel();
     void draw_rays() const;
 
@@ -82,6 +91,10 @@ private:
     // Mouse state, from events (scripted events do not move SDL's own cursor).
     bool left_ = false, middle_ = false, right_ = false, dragged_ = false;
     int press_x_ = 0, press_y_ = 0;
+
+    std::optional<CostKind> shown_kind_;
+    std::optional<CostMap> cost_map_;
+    bool cost_map_stale_ = true, showing_heatmap_ = false;
 
     std::optional<PixelExplanation> explained_;
     std::string explanation_, panel_text_;

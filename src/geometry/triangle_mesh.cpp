@@ -73,14 +73,32 @@ bool TriangleMesh::intersect_triangle(uint32_t triangle, Ray& ray, Hit& hit) con
 
 bool TriangleMesh::intersect(Ray& ray, Hit& hit) const {
     if (!has_alpha_mask()) return bvh_.intersect<false>(ray, hit);
-    return bvh_.intersect<false>(ray, hit, [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); });
+    return bvh_.intersect<false>(ray, hit,
+                                 [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); });
 }
 
 bool TriangleMesh::occluded(const Ray& ray) const {
     Ray r = ray;
     Hit scratch;
     if (!has_alpha_mask()) return bvh_.intersect<true>(r, scratch);
-    return bvh_.intersect<true>(r, scratch, [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); });
+    return bvh_.intersect<true>(r, scratch,
+                                [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); });
+}
+
+bool TriangleMesh::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
+    const TraversalCount count{&stats};
+    if (!has_alpha_mask()) return bvh_.intersect<false>(ray, hit, AcceptAllHits{}, count);
+    return bvh_.intersect<false>(
+        ray, hit, [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); }, count);
+}
+
+bool TriangleMesh::occluded_counted(const Ray& ray, TraversalStats& stats) const {
+    const TraversalCount count{&stats};
+    Ray r = ray;
+    Hit scratch;
+    if (!has_alpha_mask()) return bvh_.intersect<true>(r, scratch, AcceptAllHits{}, count);
+    return bvh_.intersect<true>(
+        r, scratch, [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); }, count);
 }
 
 void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
@@ -95,8 +113,7 @@ void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteractio
     si.front_face = dot(ray.direction, ng) < 0.0f;
     Vec3 ns = ng;
     if (!data_.normals.empty()) {
-        const Vec3 interpolated =
-            data_.normals[idx[0]] * b0 + data_.normals[idx[1]] * b1 + data_.normals[idx[2]] * b2;
+        const Vec3 interpolated = data_.normals[idx[0]] * b0 + data_.normals[idx[1]] * b1 + data_.normals[idx[2]] * b2;
         const float len = length(interpolated);
         if (len > 0.0f) ns = face_forward(interpolated / len, ng);
     }

@@ -85,6 +85,16 @@ PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSetti
     return explanation;
 }
 
+RayTree Integrator::record_sample(const RenderScene& scene, const RenderSettings& settings, const Camera& camera,
+                                  uint32_t x, uint32_t y, uint32_t index) const {
+    const Filter filter(settings.filter, settings.filter_radius);
+    Sampler sampler(settings.seed, settings.samples_per_axis);
+    RayTree tree;
+    TraceContext context{.sampler = sampler, .rays = 0, .tree = &tree};
+    (void)take_sample(scene, camera, filter, x, y, index, settings.width, settings.height, context);
+    return tree;
+}
+
 RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                                const ProgressCallback& progress, const std::atomic<bool>* stop, TileGrid* tiles) const {
     if (settings.samples_per_axis == 0) throw std::invalid_argument("samples per axis must be at least 1");

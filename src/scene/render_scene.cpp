@@ -56,7 +56,8 @@ void RenderScene::build_area_lights() {
             if (!(o.shape->area() > 0.0f)) continue;
             const Material& m = scene_.material(o.material);
             // Glint's surfaces are two-sided, and so is what they emit.
-            area_lights_.push_back(std::make_unique<AreaLight>(o.shape, transform, m.emission, m.emission_texture, true));
+            area_lights_.push_back(
+                std::make_unique<AreaLight>(o.shape, transform, m.emission, m.emission_texture, true));
         }
         objects_[i].area_light = int32_t(area_lights_.size() - 1);
     }
@@ -72,24 +73,29 @@ Color RenderScene::emitted_slow(uint32_t object, const Material& m, const Surfac
     return le;
 }
 
-bool RenderScene::intersect_object(uint32_t index, Ray& ray, Hit& hit) const {
+bool RenderScene::intersect_object(uint32_t index, Ray& ray, Hit& hit, TraversalStats* stats) const {
     const HotObject& o = objects_[index];
+    auto shape_intersect = [&](Ray& r) {
+        return stats ? o.shape->intersect_counted(r, hit, *stats) : o.shape->intersect(r, hit);
+    };
     if (!o.transformed) {
-        if (!o.shape->intersect(ray, hit)) return false;
+        if (!shape_intersect(ray)) return false;
     } else {
         // Transform the ray into object space without renormalising: t is the same in both.
         Ray local = o.object_from_world.ray(ray);
-        if (!o.shape->intersect(local, hit)) return false;
+        if (!shape_intersect(local)) return false;
         ray.tmax = local.tmax;
     }
     hit.object = index;
     return true;
 }
 
-bool RenderScene::occluded_by_object(uint32_t index, const Ray& ray, DielectricShadows mode) const {
+bool RenderScene::occluded_by_object(uint32_t index, const Ray& ray, DielectricShadows mode,
+                                     TraversalStats* stats) const {
     const HotObject& o = objects_[index];
     if (o.dielectric && mode == DielectricShadows::None) return false;
-    return o.transformed ? o.shape->occluded(o.object_from_world.ray(ray)) : o.shape->occluded(ray);
+    const Ray r = o.transformed ? o.object_from_world.ray(ray) : ray;
+    return stats ? o.shape->occluded_counted(r, *stats) : o.shape->occluded(r);
 }
 
 bool RenderScene::intersect(Ray& ray, Hit& hit) const {
@@ -99,6 +105,18 @@ bool RenderScene::intersect(Ray& ray, Hit& hit) const {
 bool RenderScene::occluded(const Ray& ray, DielectricShadows mode) const {
     Ray r = ray;
     return top_level_.traverse<true>(r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr, mode); });
+}
+
+bool RenderScene::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
+    return top_level_.traverse<false>(
+        ray, [&](uint32_t object, Ray& r) { return intersect_object(object, r, hit, &stats); }, TraversalCount{&stats});
+}
+
+bool RenderScene::occluded_counted(const Ray& ray, DielectricShadows mode, TraversalStats& stats) const {
+    Ray r = ray;
+    return top_level_.traverse<true>(
+        r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr, mode, &stats); },
+        TraversalCount{&stats});
 }
 
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {

@@ -7,6 +7,7 @@
 /// `TriangleBvh` (see wide_bvh.h), which is much faster for many small primitives.
 
 #include "glint/accel/sah_builder.h"
+#include "glint/accel/traversal_count.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
 
@@ -25,8 +26,8 @@ public:
     /// Visit leaves front to back. `intersect_primitive(uint32_t primitive, Ray& ray) -> bool`
     /// tests one primitive, shrinks ray.tmax on a closer hit and returns true if it hit.
     /// With AnyHit the traversal stops at the first hit. Returns whether anything was hit.
-    template <bool AnyHit, typename IntersectPrimitive>
-    bool traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const;
+    template <bool AnyHit, typename IntersectPrimitive, typename Count = NoTraversalCount>
+    bool traverse(Ray& ray, IntersectPrimitive&& intersect_primitive, const Count& count = {}) const;
 
     /// Node 0 is the root; empty when there is nothing to hit.
     [[nodiscard]] std::span<const BvhNode> nodes() const { return nodes_; }
@@ -44,8 +45,8 @@ private:
     std::vector<uint32_t> order_;
 };
 
-template <bool AnyHit, typename IntersectPrimitive>
-bool Bvh::traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const {
+template <bool AnyHit, typename IntersectPrimitive, typename Count>
+bool Bvh::traverse(Ray& ray, IntersectPrimitive&& intersect_primitive, const Count& count) const {
     if (nodes_.empty()) return false;
     const Vec3 inv_dir(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z);
     // Every inner node on the way down pushes at most one child, and no leaf lies deeper
@@ -59,6 +60,7 @@ bool Bvh::traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const {
     uint32_t current = 0;
     for (;;) {
         const BvhNode& node = nodes_[current];
+        count.node();
         if (node.is_leaf()) {
             for (uint32_t i = node.index; i < node.index + node.count; ++i) {
                 if (intersect_primitive(order_[i], ray)) {
@@ -69,7 +71,8 @@ bool Bvh::traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const {
         } else {
             const uint32_t left = node.index, right = node.index + 1;
             float l_enter, l_exit, r_enter, r_exit;
-            const bool hit_left = nodes_[left].bounds.intersect(ray.origin, inv_dir, ray.tmin, ray.tmax, l_enter, l_exit);
+            const bool hit_left =
+                nodes_[left].bounds.intersect(ray.origin, inv_dir, ray.tmin, ray.tmax, l_enter, l_exit);
             const bool hit_right =
                 nodes_[right].bounds.intersect(ray.origin, inv_dir, ray.tmin, ray.tmax, r_enter, r_exit);
             if (hit_left && hit_right) {
@@ -78,8 +81,14 @@ bool Bvh::traverse(Ray& ray, IntersectPrimitive&& intersect_primitive) const {
                 current = left_first ? left : right;
                 continue;
             }
-            if (hit_left) { current = left; continue; }
-            if (hit_right) { current = right; continue; }
+            if (hit_left) {
+                current = left;
+                continue;
+            }
+            if (hit_right) {
+                current = right;
+                continue;
+            }
         }
         if (top == 0) break;
         current = stack[--top];

@@ -49,8 +49,9 @@ public:
     /// ray.tmax and hit.t, hit.primitive (the triangle), hit.u, hit.v (barycentrics of
     /// vertices 1 and 2). `accept(triangle, u, v) -> bool` may reject a hit (alpha
     /// masks); rejected hits do not end the query.
-    template <bool AnyHit, typename Filter = AcceptAllHits>
-    bool intersect(Ray& ray, Hit& hit, Filter&& accept = {}) const;
+    /// `count` (traversal_count.h) counts nodes and triangles for the viewer's heatmaps.
+    template <bool AnyHit, typename Filter = AcceptAllHits, typename Count = NoTraversalCount>
+    bool intersect(Ray& ray, Hit& hit, Filter&& accept = {}, const Count& count = {}) const;
 
     /// True before build() (or after building over no triangles).
     [[nodiscard]] bool empty() const { return blocks_.empty(); }
@@ -85,8 +86,14 @@ struct BlockRay {
     WatertightRay w;
     __m128 ox, oy, oz, sx, sy, sz;
     explicit BlockRay(const Ray& ray_)
-        : ray(ray_), w(ray.direction), ox(_mm_set1_ps(ray.origin[w.kx])), oy(_mm_set1_ps(ray.origin[w.ky])),
-          oz(_mm_set1_ps(ray.origin[w.kz])), sx(_mm_set1_ps(w.sx)), sy(_mm_set1_ps(w.sy)), sz(_mm_set1_ps(w.sz)) {}
+        : ray(ray_),
+          w(ray.direction),
+          ox(_mm_set1_ps(ray.origin[w.kx])),
+          oy(_mm_set1_ps(ray.origin[w.ky])),
+          oz(_mm_set1_ps(ray.origin[w.kz])),
+          sx(_mm_set1_ps(w.sx)),
+          sy(_mm_set1_ps(w.sy)),
+          sz(_mm_set1_ps(w.sz)) {}
 };
 #else
 /// The watertight test's per-ray constants.
@@ -127,8 +134,9 @@ inline uint32_t intersect_block(const TriangleBlock& b, const BlockRay& r, float
     int mask = ~_mm_movemask_ps(_mm_and_ps(_mm_cmplt_ps(lowest, zero), _mm_cmpgt_ps(highest, zero))) & 0xf;
     if (mask == 0) return 0;
     const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
-    const __m128 t_scaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(r.sz, az)), _mm_mul_ps(v, _mm_mul_ps(r.sz, bz))),
-                                       _mm_mul_ps(w, _mm_mul_ps(r.sz, cz)));
+    const __m128 t_scaled =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(r.sz, az)), _mm_mul_ps(v, _mm_mul_ps(r.sz, bz))),
+                   _mm_mul_ps(w, _mm_mul_ps(r.sz, cz)));
     // Compare t·|det| with the interval scaled by |det| and divide only for hits (the
     // paper's deferred division). det = 0 (zero-area triangles) fails the strict test,
     // unused (NaN) lanes fail every comparison.
@@ -165,12 +173,17 @@ inline uint32_t intersect_block(const TriangleBlock& b, const BlockRay& r, float
 
 }  // namespace detail
 
-template <bool AnyHit, typename Filter>
-bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept) const {
+template <bool AnyHit, typename Filter, typename Count>
+bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept, const Count& count) const {
     constexpr bool kFiltered = !std::is_same_v<std::decay_t<Filter>, AcceptAllHits>;
     const detail::BlockRay block_ray(ray);
     auto intersect_leaf = [&](uint32_t leaf, Ray& r) {
         const TriangleBlock& block = blocks_[leaf];
+        if constexpr (!std::is_same_v<Count, NoTraversalCount>) {
+            uint64_t real = 0;  // padding lanes hold kNoHit
+            for (const uint32_t triangle : block.triangle) real += triangle != kNoHit;
+            count.primitives(real);
+        }
         float t[4], u[4], v[4];
         uint32_t mask = detail::intersect_block(block, block_ray, r.tmin, r.tmax, t, u, v);
         // Take the nearest lane that the filter accepts (any accepted lane for AnyHit).
@@ -197,7 +210,7 @@ bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept) const {
         return false;
     };
     auto prefetch_leaf = [this](uint32_t leaf) { prefetch_lines<sizeof(TriangleBlock)>(&blocks_[leaf]); };
-    return wide_.traverse<AnyHit>(ray, intersect_leaf, prefetch_leaf);
+    return wide_.traverse<AnyHit>(ray, intersect_leaf, prefetch_leaf, count);
 }
 
 }  // namespace glint

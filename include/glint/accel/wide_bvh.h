@@ -8,6 +8,7 @@
 /// shape: leaves are numbered, and the caller's callback intersects leaf k.
 
 #include "glint/accel/sah_builder.h"
+#include "glint/accel/traversal_count.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
 
@@ -62,9 +63,8 @@ struct NoLeafPrefetch {
 template <std::size_t Bytes>
 inline void prefetch_lines(const void* p) {
     const char* c = static_cast<const char*>(p);
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (__builtin_prefetch(c + 64 * I, 0, 3), ...);
-    }(std::make_index_sequence<(Bytes + 63) / 64>{});
+    [&]<std::size_t... I>(std::index_sequence<I...>) { (__builtin_prefetch(c + 64 * I, 0, 3), ...); }
+    (std::make_index_sequence<(Bytes + 63) / 64>{});
 }
 
 class WideBvh {
@@ -77,8 +77,10 @@ public:
     /// traversal visits children front to back and skips subtrees behind ray.tmax; with
     /// AnyHit it stops at the first hit and does not sort. Returns whether anything was hit.
     /// `prefetch_leaf(uint32_t leaf)` may start loading a leaf's data when its box is hit.
-    template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf = NoLeafPrefetch>
-    bool traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf = {}) const;
+    template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf = NoLeafPrefetch,
+              typename Count = NoTraversalCount>
+    bool traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf = {},
+                  const Count& count = {}) const;
 
     /// Node 0 is the root; empty when there is nothing to hit.
     [[nodiscard]] std::span<const WideNode> nodes() const { return nodes_; }
@@ -170,8 +172,9 @@ inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, 
 #endif
 }
 
-template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf>
-bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf) const {
+template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf, typename Count>
+bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf,
+                       const Count& count) const {
     if (nodes_.empty()) return false;
     const WideRay r(ray);
     const WideNode* const nodes = nodes_.data();
@@ -195,6 +198,7 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
         bool reached_leaf = true;
         while (!(ref & WideNode::kLeafBit)) {
             const WideNode& node = nodes[ref];
+            count.node();
             uint32_t mask = intersect_node<!AnyHit>(node, r, ray.tmin, ray.tmax, t_enter);
             if (mask == 0) {
                 reached_leaf = false;

@@ -1,6 +1,7 @@
 #pragma once
 /// \file The interface every kind of geometry implements.
 
+#include "glint/accel/traversal_count.h"
 #include "glint/geometry/hit.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
@@ -44,6 +45,18 @@ public:
 
     /// Any hit with t in [ray.tmin, ray.tmax]: the shadow-ray query, which may stop early.
     [[nodiscard]] virtual bool occluded(const Ray& ray) const = 0;
+
+    /// intersect() and occluded() that also count what they test, for the viewer's heatmaps
+    /// (accel/traversal_count.h). An analytic shape is one primitive; a mesh counts its
+    /// nodes and triangles.
+    virtual bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
+        ++stats.primitives;
+        return intersect(ray, hit);
+    }
+    [[nodiscard]] virtual bool occluded_counted(const Ray& ray, TraversalStats& stats) const {
+        ++stats.primitives;
+        return occluded(ray);
+    }
 
     /// Full surface description in object space for a hit this shape reported.
     /// `si.materials` is left to the caller unless the shape has per-vertex materials.

@@ -48,6 +48,8 @@ public:
     [[nodiscard]] Bounds3 bounds() const override { return bounds_; }
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
+    bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
+    [[nodiscard]] bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
     void prepare() override;
     [[nodiscard]] float area() const override;

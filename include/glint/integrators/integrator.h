@@ -70,6 +70,11 @@ public:
                                            uint32_t y, std::optional<uint32_t> sample = std::nullopt,
                                            const Camera* camera = nullptr) const;
 
+    /// The rays of sample `index` of pixel (x, y) seen through `camera`, as explain() records
+    /// them (the viewer's heatmaps retrace them).
+    [[nodiscard]] RayTree record_sample(const RenderScene& scene, const RenderSettings& settings, const Camera& camera,
+                                        uint32_t x, uint32_t y, uint32_t index) const;
+
     /// One pass of a progressive render (the viewer's): sample `index` of the settings' N×N
     /// for every pixel of `film`, seen through `camera`. Passes 0, 1, ..., N²−1 in order
     /// with the scene's camera make the film render() makes, bit for bit: each pixel gets

@@ -57,12 +57,17 @@ public:
     [[nodiscard]] bool occluded(const Ray& ray) const { return occluded(ray, scene_.dielectric_shadows); }
     /// Any hit that blocks light, with dielectrics treated as `mode` says.
     [[nodiscard]] bool occluded(const Ray& ray, DielectricShadows mode) const;
+    /// intersect() and occluded() that also count the nodes and primitives they test (the
+    /// viewer's heatmaps); same results.
+    bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const;
+    [[nodiscard]] bool occluded_counted(const Ray& ray, DielectricShadows mode, TraversalStats& stats) const;
     /// World-space surface description of a hit returned by intersect().
     [[nodiscard]] SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
     /// Radiance that the surface of the object hit emits towards `wo` (unit, away from the
     /// surface): its area light's, or the material's emission where it is no light.
     /// Inline for the common case, a hit on something that emits nothing.
-    [[nodiscard]] Color emitted(uint32_t object, const Material& m, const SurfaceInteraction& si, const Vec3& wo) const {
+    [[nodiscard]] Color emitted(uint32_t object, const Material& m, const SurfaceInteraction& si,
+                                const Vec3& wo) const {
         if (objects_[object].area_light < 0 && m.emission.is_black()) return Color();
         return emitted_slow(object, m, si, wo);
     }
@@ -88,8 +93,10 @@ private:
     void build_area_lights();
     [[nodiscard]] Color emitted_slow(uint32_t object, const Material& m, const SurfaceInteraction& si,
                                      const Vec3& wo) const;
-    bool intersect_object(uint32_t object, Ray& ray, Hit& hit) const;
-    bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode) const;
+    /// With `stats` the shape counts what it tests (intersect_counted); null in the render.
+    bool intersect_object(uint32_t object, Ray& ray, Hit& hit, TraversalStats* stats = nullptr) const;
+    bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode,
+                            TraversalStats* stats = nullptr) const;
 
     Scene scene_;
     std::vector<HotObject> objects_;
