@@ -5,7 +5,7 @@
 # the window. Skips (exit 77) when the viewer is not built or xvfb-run is missing.
 #   viewer_session_test.sh GLINT SCENES_DIR
 set -uo pipefail
-glint=$1 scenes=$2
+glint=$(realpath "$1") scenes=$(realpath "$2")
 # Without a display the command stops at once: with why it cannot open a window, or with why
 # this build has no viewer.
 if DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view 2>&1 | grep -q "built without the viewer"; then

@@ -42,13 +42,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-ExplainedSample Integrator::take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter,
-                                        uint32_t x, uint32_t y, uint32_t index, uint32_t width, uint32_t height,
-                                        TraceContext& context) const {
+CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x,
+                                     uint32_t y, uint32_t index, uint32_t width, uint32_t height,
+                                     TraceContext& context) const {
     context.sampler.start_pixel_sample(uint64_t(y) * width + x, index);
     const FilterSample fs = filter.sample(context.sampler.pixel_2d());
-    ExplainedSample sample;
-    sample.index = index;
+    CameraSample sample;
     sample.film_position = Vec2((float(x) + 0.5f) + fs.offset.x, (float(y) + 0.5f) + fs.offset.y);
     sample.filter_weight = fs.weight;
     const Ray ray = camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height));
@@ -75,8 +74,10 @@ PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSetti
         RayTree tree;
         const bool recorded = !sample || *sample == index;
         TraceContext context{.sampler = sampler, .rays = 0, .tree = recorded ? &tree : nullptr};
-        ExplainedSample s = take_sample(scene, camera ? *camera : scene.camera(), filter, x, y, index, settings.width,
-                                        settings.height, context);
+        ExplainedSample s;
+        static_cast<CameraSample&>(s) = take_sample(scene, camera ? *camera : scene.camera(), filter, x, y, index,
+                                                    settings.width, settings.height, context);
+        s.index = index;
         if (recorded) s.tree = std::move(tree);
         pixel.add_sample(0, 0, s.radiance, s.filter_weight);
         explanation.samples.push_back(std::move(s));
@@ -118,7 +119,7 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
         for (uint32_t y = y0; y < y1; ++y)
             for (uint32_t x = x0; x < x1; ++x)
                 for (uint32_t index = 0; index < n * n; ++index) {
-                    const ExplainedSample sample =
+                    const CameraSample sample =
                         take_sample(scene, scene.camera(), filter, x, y, index, width, height, context);
                     film.add_sample(x, y, sample.radiance, sample.filter_weight);
                 }
@@ -154,7 +155,7 @@ RenderStats Integrator::render_pass(const RenderScene& scene, const Camera& came
         TraceContext context{sampler};
         for (uint32_t y = y0; y < y1; ++y)
             for (uint32_t x = x0; x < x1; ++x) {
-                const ExplainedSample sample = take_sample(scene, camera, filter, x, y, index, width, height, context);
+                const CameraSample sample = take_sample(scene, camera, filter, x, y, index, width, height, context);
                 film.add_sample(x, y, sample.radiance, sample.filter_weight);
             }
         rays += context.rays;

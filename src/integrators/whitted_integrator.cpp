@@ -15,11 +15,21 @@ std::unique_ptr<Integrator> WhittedIntegrator::create(const RenderSettings& sett
 }
 
 Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const {
-    return trace(scene, ray, 0, IorStack(scene.ambient_ior()), context);
+    const IorStack media(scene.ambient_ior());
+    return context.tree ? trace_ray<true>(scene, ray, 0, media, context)
+                        : trace_ray<false>(scene, ray, 0, media, context);
 }
 
+Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
+                               TraceContext& context) const {
+    return context.tree ? trace_ray<true>(scene, ray, depth, media, context)
+                        : trace_ray<false>(scene, ray, depth, media, context);
+}
+
+template <bool Record>
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
-                                      const Vec3& ng, TraceContext& context, int32_t node) const {
+                                      const Vec3& ng, TraceContext& context) const {
+    const int32_t node = context.node;
     const Vec3 origin = offset_ray_origin(si.p, ng);
     Color sum;
     auto add = [&](const LightSample& ls, float weight, uint32_t light) {
@@ -28,11 +38,11 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         ++context.rays;
         const Ray shadow = shadow_ray(origin, ls);
         if (scene.occluded(shadow)) {
-            if (context.tree) context.tree->add_shadow_ray(node, shadow, light, true, Color());
+            if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, true, Color());
             return;
         }
         const Color c = bsdf.eval(ls.direction) * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
-        if (context.tree) context.tree->add_shadow_ray(node, shadow, light, false, c);
+        if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, false, c);
         sum += c;
     };
     const std::vector<const Light*>& lights = scene.all_lights();
@@ -56,61 +66,69 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
     return sum;
 }
 
-Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
-                               TraceContext& context, const RayBranch& branch) const {
+template <bool Record>
+Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
+                                   TraceContext& context) const {
     ++context.rays;
-    const int32_t node =
-        context.tree ? context.tree->add_ray(branch.kind, branch.parent, depth, ray, branch.weight) : -1;
+    int32_t node = -1;
+    if constexpr (Record) {
+        const RayBranch& branch = context.branch;
+        node = context.tree->add_ray(branch.kind, branch.parent, depth, ray, branch.weight);
+        context.node = node;
+    }
     Ray r = ray;
     Hit hit;
     if (!scene.intersect(r, hit)) {
         const Color background = scene.background().evaluate(ray.direction);
-        if (context.tree) context.tree->add_radiance(node, background);
+        if constexpr (Record) context.tree->add_radiance(node, background);
         return background;
     }
 
     const SurfaceInteraction si = scene.interaction(r, hit);
-    const Hit where{.t = r.tmax, .object = hit.object, .primitive = hit.primitive, .u = hit.u, .v = hit.v};
+    if constexpr (Record) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], Vec3());
     // Only hits on per-vertex materials build a (blended) Material.
     if (si.blends_materials)
-        return shade(scene, ray, where, si, blended_material(scene, si), depth, media, context, node);
-    return shade(scene, ray, where, si, scene.material(si.materials[0]), depth, media, context, node);
+        return shade<Record>(scene, ray, hit.object, si, blended_material(scene, si), depth, media, context);
+    return shade<Record>(scene, ray, hit.object, si, scene.material(si.materials[0]), depth, media, context);
 }
 
-Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, const Hit& hit, const SurfaceInteraction& si,
-                               const Material& m, uint32_t depth, const IorStack& media, TraceContext& context,
-                               int32_t node) const {
+template <bool Record>
+Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
+                               const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const {
     const ShadingPoint sp = shading_point(si, m, ray, media);
     const Color texture = diffuse_texture(m, si);
     const Bsdf bsdf(m, texture, sp.n, sp.ng, sp.wo, sp.media);
-    if (context.tree) context.tree->set_hit(node, hit.t, hit.object, si.materials[0], sp.n);
+    // The ray being shaded (context.node changes as the children are traced).
+    const int32_t node = Record ? context.node : -1;
+    if constexpr (Record) context.tree->set_normal(node, sp.n);
 
-    Color radiance = scene.emitted(hit.object, m, si, sp.wo);
+    Color radiance = scene.emitted(object, m, si, sp.wo);
     const float t = std::clamp(m.transparency, 0.0f, 1.0f);
     if (t < 1.0f) {
         // Whitted's ambient term: ka·La, textured like the diffuse term; no BSDF lobe.
         radiance += texture * m.ambient * scene.ambient_light() * (1.0f - t);
-        if (context.tree) context.tree->add_radiance(node, radiance);
-        radiance += direct_light(scene, bsdf, si, sp.ng, context, node);
-    } else if (context.tree) {
+        if constexpr (Record) context.tree->add_radiance(node, radiance);
+        radiance += direct_light<Record>(scene, bsdf, si, sp.ng, context);
+    } else if constexpr (Record) {
         context.tree->add_radiance(node, radiance);
     }
     if (depth >= max_depth_) return radiance;
 
     // The throughput from the camera to the children, for the tree only.
-    const Color weight = context.tree ? context.tree->nodes()[std::size_t(node)].weight : Color(1.0f);
+    Color weight(1.0f);
+    if constexpr (Record) weight = context.tree->nodes()[std::size_t(node)].weight;
     const SpecularLobes& specular = bsdf.specular();
     // A reflection that the shading normal bends below the true surface would start inside it.
     if (!specular.reflection.is_black() && dot(specular.reflected, sp.ng) > 0.0f) {
         const Ray reflected(offset_ray_origin(si.p, sp.ng), specular.reflected);
-        const RayBranch child{RayKind::Reflection, node, weight * specular.reflection};
-        radiance += specular.reflection * trace(scene, reflected, depth + 1, media, context, child);
+        if constexpr (Record) context.branch = {RayKind::Reflection, node, weight * specular.reflection};
+        radiance += specular.reflection * trace_ray<Record>(scene, reflected, depth + 1, media, context);
     }
     if (specular.transmission > 0.0f && specular.refracted) {
         const IorStack inside = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
         const Ray transmitted(offset_ray_origin(si.p, -sp.ng), *specular.refracted);
-        const RayBranch child{RayKind::Refraction, node, weight * specular.transmission};
-        radiance += trace(scene, transmitted, depth + 1, inside, context, child) * specular.transmission;
+        if constexpr (Record) context.branch = {RayKind::Refraction, node, weight * specular.transmission};
+        radiance += trace_ray<Record>(scene, transmitted, depth + 1, inside, context) * specular.transmission;
     }
     return radiance;
 }

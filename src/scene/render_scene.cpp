@@ -73,29 +73,30 @@ Color RenderScene::emitted_slow(uint32_t object, const Material& m, const Surfac
     return le;
 }
 
-bool RenderScene::intersect_object(uint32_t index, Ray& ray, Hit& hit, TraversalStats* stats) const {
+template <class ShapeIntersect>
+bool RenderScene::intersect_object_with(uint32_t index, Ray& ray, Hit& hit,
+                                        const ShapeIntersect& shape_intersect) const {
     const HotObject& o = objects_[index];
-    auto shape_intersect = [&](Ray& r) {
-        return stats ? o.shape->intersect_counted(r, hit, *stats) : o.shape->intersect(r, hit);
-    };
     if (!o.transformed) {
-        if (!shape_intersect(ray)) return false;
+        if (!shape_intersect(*o.shape, ray)) return false;
     } else {
         // Transform the ray into object space without renormalising: t is the same in both.
         Ray local = o.object_from_world.ray(ray);
-        if (!shape_intersect(local)) return false;
+        if (!shape_intersect(*o.shape, local)) return false;
         ray.tmax = local.tmax;
     }
     hit.object = index;
     return true;
 }
 
-bool RenderScene::occluded_by_object(uint32_t index, const Ray& ray, DielectricShadows mode,
-                                     TraversalStats* stats) const {
+bool RenderScene::intersect_object(uint32_t index, Ray& ray, Hit& hit) const {
+    return intersect_object_with(index, ray, hit, [&](const Shape& shape, Ray& r) { return shape.intersect(r, hit); });
+}
+
+bool RenderScene::occluded_by_object(uint32_t index, const Ray& ray, DielectricShadows mode) const {
     const HotObject& o = objects_[index];
     if (o.dielectric && mode == DielectricShadows::None) return false;
-    const Ray r = o.transformed ? o.object_from_world.ray(ray) : ray;
-    return stats ? o.shape->occluded_counted(r, *stats) : o.shape->occluded(r);
+    return o.transformed ? o.shape->occluded(o.object_from_world.ray(ray)) : o.shape->occluded(ray);
 }
 
 bool RenderScene::intersect(Ray& ray, Hit& hit) const {
@@ -108,15 +109,20 @@ bool RenderScene::occluded(const Ray& ray, DielectricShadows mode) const {
 }
 
 bool RenderScene::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
+    auto counted = [&](const Shape& shape, Ray& r) { return shape.intersect_counted(r, hit, stats); };
     return top_level_.traverse<false>(
-        ray, [&](uint32_t object, Ray& r) { return intersect_object(object, r, hit, &stats); }, TraversalCount{&stats});
+        ray, [&](uint32_t object, Ray& r) { return intersect_object_with(object, r, hit, counted); },
+        TraversalCount{&stats});
 }
 
 bool RenderScene::occluded_counted(const Ray& ray, DielectricShadows mode, TraversalStats& stats) const {
     Ray r = ray;
-    return top_level_.traverse<true>(
-        r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr, mode, &stats); },
-        TraversalCount{&stats});
+    auto occluded_by = [&](uint32_t index, Ray& rr) {
+        const HotObject& o = objects_[index];
+        if (o.dielectric && mode == DielectricShadows::None) return false;
+        return o.shape->occluded_counted(o.transformed ? o.object_from_world.ray(rr) : rr, stats);
+    };
+    return top_level_.traverse<true>(r, occluded_by, TraversalCount{&stats});
 }
 
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {

@@ -76,6 +76,8 @@ public:
     int32_t add_ray(RayKind kind, int32_t parent, uint32_t depth, const Ray& ray, const Color& weight);
     /// What ray `node` met.
     void set_hit(int32_t node, float t, uint32_t object, uint32_t material, const Vec3& normal);
+    /// The shading normal at ray `node`'s hit, once the integrator has it.
+    void set_normal(int32_t node, const Vec3& normal) { nodes_[std::size_t(node)].normal = normal; }
     /// Ray `node` adds `radiance` (before its weight) to the sample.
     void add_radiance(int32_t node, const Color& radiance);
     /// A shadow ray from the hit of `parent` to light `light`: it adds `radiance` (before
@@ -87,12 +89,16 @@ private:
 };
 
 /// One sample of a pixel as the render takes it.
-struct ExplainedSample {
-    uint32_t index = 0;
+struct CameraSample {
     /// Where on the film the sample's camera ray starts (pixel (x, y) covers [x, x+1)×[y, y+1)).
     Vec2 film_position;
     float filter_weight = 0.0f;
     Color radiance;
+};
+
+/// A sample as explain() reports it.
+struct ExplainedSample : CameraSample {
+    uint32_t index = 0;
     /// Recorded for the samples asked for.
     std::optional<RayTree> tree;
 };

@@ -29,17 +29,23 @@ public:
 
     /// Radiance along `ray` at recursion `depth` inside the media of `media`.
     [[nodiscard]] Color trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
-                              TraceContext& context, const RayBranch& branch = {}) const;
+                              TraceContext& context) const;
 
 private:
-    /// Radiance leaving the hit `si` (`hit`: its object and distance), of material `m`, back
-    /// along `ray`; `node` is the ray in context.tree, if one is recorded.
-    [[nodiscard]] Color shade(const RenderScene& scene, const Ray& ray, const Hit& hit, const SurfaceInteraction& si,
-                              const Material& m, uint32_t depth, const IorStack& media, TraceContext& context,
-                              int32_t node) const;
+    /// trace(), compiled twice: recording each ray into context.tree (context.branch says how
+    /// the ray came about), or (the render) not, so that the render pays nothing for it.
+    template <bool Record>
+    [[nodiscard]] Color trace_ray(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
+                                  TraceContext& context) const;
+    /// Radiance leaving the hit `si` on `object`, of material `m`, back along `ray`; when
+    /// recording, context.node is the ray that hit.
+    template <bool Record>
+    [[nodiscard]] Color shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
+                              const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const;
     /// Σ over lights of the BSDF's smooth lobes times the visible light (f·L·cosθ/pdf).
+    template <bool Record>
     [[nodiscard]] Color direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
-                                     const Vec3& ng, TraceContext& context, int32_t node) const;
+                                     const Vec3& ng, TraceContext& context) const;
 
     uint32_t max_depth_;
     uint32_t light_samples_;

@@ -93,10 +93,11 @@ private:
     void build_area_lights();
     [[nodiscard]] Color emitted_slow(uint32_t object, const Material& m, const SurfaceInteraction& si,
                                      const Vec3& wo) const;
-    /// With `stats` the shape counts what it tests (intersect_counted); null in the render.
-    bool intersect_object(uint32_t object, Ray& ray, Hit& hit, TraversalStats* stats = nullptr) const;
-    bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode,
-                            TraversalStats* stats = nullptr) const;
+    bool intersect_object(uint32_t object, Ray& ray, Hit& hit) const;
+    bool occluded_by_object(uint32_t object, const Ray& ray, DielectricShadows mode) const;
+    /// Object `object`'s part of intersect(): `shape_intersect(shape, ray)` in its space.
+    template <class ShapeIntersect>
+    bool intersect_object_with(uint32_t object, Ray& ray, Hit& hit, const ShapeIntersect& shape_intersect) const;
 
     Scene scene_;
     std::vector<HotObject> objects_;
