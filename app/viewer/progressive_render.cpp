@@ -30,8 +30,10 @@ void ProgressiveRender::restart(const Camera& camera, bool moving) {
         accumulated_.reset();
         status_.passes = 0;
         status_.preview = true;
+        // A coarse pass in flight finishes while the camera keeps moving: cut short at every
+        // mouse event, a slow scene would show nothing until the camera stops.
+        if (!(moving && rendering_coarse_)) stop_pass_ = true;
     }
-    stop_pass_ = true;
     wake_.notify_all();
 }
 
@@ -88,10 +90,16 @@ void ProgressiveRender::run() {
         const uint64_t generation = rendered_generation;
         if (!coarse_done) {
             auto coarse = std::make_shared<Film>(coarse_width, coarse_height);
+            {
+                const std::lock_guard lock(mutex_);
+                rendering_coarse_ = true;
+            }
             const RenderStats stats = integrator_.render_pass(scene_, camera, settings_, *coarse, 0, &stop_pass_);
             coarse_done = true;
             const std::lock_guard lock(mutex_);
-            if (!stats.complete() || generation_ != generation) continue;
+            rendering_coarse_ = false;
+            // Shown even if the camera has moved on since: the next one follows at once.
+            if (!stats.complete()) continue;
             newest_ = std::move(coarse);
             ++version_;
             status_.rays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds : 0.0;

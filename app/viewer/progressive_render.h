@@ -66,6 +66,7 @@ private:
     bool moving_ = false;
     uint64_t generation_ = 0;
     bool quit_ = false;
+    bool rendering_coarse_ = false;
     std::atomic<bool> stop_pass_{false};
     std::shared_ptr<const Film> newest_, accumulated_;
     uint64_t version_ = 0;
