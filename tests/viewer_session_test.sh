@@ -8,7 +8,8 @@ set -uo pipefail
 glint=$(realpath "$1") scenes=$(realpath "$2")
 # Without a display the command stops at once: with why it cannot open a window, or with why
 # this build has no viewer.
-if DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view 2>&1 | grep -q "built without the viewer"; then
+probe=$(DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view 2>&1 || true)
+if grep -q "built without the viewer" <<< "$probe"; then
   echo "SKIP: this glint has no viewer (SDL2 or Dear ImGui missing, or GLINT_VIEWER=OFF)"; exit 77
 fi
 command -v xvfb-run > /dev/null || { echo "SKIP: xvfb-run not found (apt install xvfb)"; exit 77; }
