@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 namespace glint::app {
@@ -17,16 +18,19 @@ struct SceneOptions {
     std::string env_kind;
     float env_rotation = 0.0f;
     float env_intensity = 1.0f;
+    /// --aperture and --focus: the camera's lens radius and focus distance, world units.
+    std::optional<float> aperture, focus;
 };
 
 /// What `render` and `info` load: a scene file, or the built-in scene.
 using SceneSource = SceneFile;
 
-/// Load `path` (the built-in spheres scene when empty) and apply the camera and environment
-/// options. Throws SceneError, ImageError or std::invalid_argument.
+/// Load `path` (the built-in spheres scene when empty) and apply the camera, lens and
+/// environment options. Throws SceneError, ImageError or std::invalid_argument.
 [[nodiscard]] SceneSource load_scene(const std::string& path, const SceneOptions& options);
 
-/// Add --camera, --env, --env-kind, --env-rotation and --env-intensity to `command`.
+/// Add --camera, --aperture, --focus, --env, --env-kind, --env-rotation and --env-intensity
+/// to `command`.
 void add_scene_options(CLI::App* command, SceneOptions& options);
 
 }  // namespace glint::app

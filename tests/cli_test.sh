@@ -114,6 +114,8 @@ check_refused "--depth: expected an integer from 0 to 64; got 5000" --depth 5000
 check_refused "--light-samples: expected an integer from 1 to 1024" --light-samples 0
 check_refused "--filter-radius: expected a radius in pixels above 0 and at most 16" --filter-radius 0
 check_refused "--threads: expected 0 (all cores) or a thread count up to 1024" --threads -1
+check_refused "--aperture: expected a lens radius ≥ 0 in world units (0: a pinhole); got -0.5" --aperture -0.5
+check_refused "--focus: expected a positive distance in world units; got 0" --focus 0
 if "$glint" render -o refused.png --spp abc 2>/dev/null; then fail "--spp abc accepted"; else
   [ $? -eq 1 ] || fail "a malformed number does not exit with 1"; fi
 

@@ -106,3 +106,25 @@ material = "grey"
     EXPECT_EQ(back.vertical_fov(), 52.0f);
     std::filesystem::remove_all(dir);
 }
+
+TEST(OrbitCamera, KeepsTheLensAndPrintsIt) {
+    glint::Camera lens_camera = kSeminar;
+    lens_camera.set_lens({.aperture_radius = 0.3f, .focus_distance = 20.0f, .blades = 6, .rotation = 10.0f});
+    glint::OrbitCamera orbit = glint::OrbitCamera::from(lens_camera, 12.0f);
+    orbit.orbit(0.4f, -0.1f);
+    const glint::ThinLens lens = orbit.camera().lens();
+    EXPECT_EQ(lens.aperture_radius, 0.3f);
+    EXPECT_EQ(lens.focus_distance, 20.0f);
+    EXPECT_EQ(lens.blades, 6u);
+    const std::filesystem::path dir = glint_test::temp_dir();
+    glint_test::write_file(
+        dir / "lens.toml",
+        orbit.toml() +
+            "[[materials]]\nname = \"grey\"\n\n[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"grey\"\n");
+    const glint::ThinLens back = glint::load_scene_file(dir / "lens.toml").loaded.scene.camera.lens();
+    EXPECT_EQ(back.aperture_radius, 0.3f);
+    EXPECT_EQ(back.focus_distance, 20.0f);
+    EXPECT_EQ(back.blades, 6u);
+    EXPECT_EQ(back.rotation, 10.0f);
+    std::filesystem::remove_all(dir);
+}

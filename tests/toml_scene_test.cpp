@@ -4,12 +4,12 @@
 #include "glint/geometry/heightfield.h"
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/triangle_mesh.h"
+#include "glint/scene/default_scene.h"
+#include "glint/scene/render_scene.h"
 #include "glint/scene_format/did_you_mean.h"
 #include "glint/scene_format/source_excerpt.h"
 #include "glint/scene_format/toml_scene_loader.h"
 #include "toml_text.h"
-#include "glint/scene/default_scene.h"
-#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -40,7 +40,9 @@ TEST(TomlSceneErrors, UnknownSection) {
 
 TEST(TomlSceneErrors, UnknownKeyWithoutCloseMatchListsTheKeys) {
     expect_error("[render]\nwidth = 64\ncolour_space = \"srgb\"\n", "test.toml:3:1:",
-                 {"unknown key 'colour_space'", "expected one of: filter, filter_radius, height, integrator, light_samples, max_depth, mis, seed, spp, width"});
+                 {"unknown key 'colour_space'",
+                  "expected one of: filter, filter_radius, height, integrator, light_samples, max_depth, mis, seed, "
+                  "spp, width"});
 }
 
 TEST(TomlSceneErrors, UnknownKeyInsideTransform) {
@@ -194,6 +196,38 @@ TEST(TomlSceneErrors, UnknownNamedShape) {
 
 TEST(TomlSceneErrors, CameraLookingAtItself) {
     expect_error("[camera]\nposition = [1, 1, 1]\nlook_at = [1, 1, 1]\n", "test.toml:1:1:", {"camera", "position"});
+}
+
+TEST(TomlScene, CameraLensFromApertureOrFStop) {
+    const std::string camera = "[camera]\nposition = [0, 0, 5]\nlook_at = [0, 0, 1]\nfov = 40\n";
+    // Without lens keys: a pinhole, focused (should a lens be given) on look_at.
+    const ThinLens pinhole = load(camera).scene.camera.lens();
+    EXPECT_TRUE(pinhole.is_pinhole());
+    EXPECT_FLOAT_EQ(pinhole.focus_distance, 4.0f);
+    const ThinLens radius = load(camera + "aperture_radius = 0.05\n").scene.camera.lens();
+    EXPECT_FLOAT_EQ(radius.aperture_radius, 0.05f);
+    EXPECT_FLOAT_EQ(radius.focus_distance, 4.0f);
+    // A 50 mm lens at f/2: an aperture 25 mm across, in metres.
+    const ThinLens f_stop =
+        load(camera + "f_stop = 2\nfocal_length = 50\nfocus_distance = 3\naperture_blades = 5\n").scene.camera.lens();
+    EXPECT_FLOAT_EQ(f_stop.aperture_radius, 0.0125f);
+    EXPECT_FLOAT_EQ(f_stop.focus_distance, 3.0f);
+    EXPECT_EQ(f_stop.blades, 5u);
+    // Without a focal length, the one that gives a 40° fov on 35 mm film (24 mm high).
+    const ThinLens from_fov = load(camera + "f_stop = 4\n").scene.camera.lens();
+    EXPECT_FLOAT_EQ(from_fov.aperture_radius, 0.001f * (12.0f / std::tan(radians(20.0f))) / 8.0f);
+}
+
+TEST(TomlSceneErrors, LensKeys) {
+    const std::string camera = "[camera]\nposition = [0, 0, 5]\nlook_at = [0, 0, 0]\n";
+    expect_error(camera + "aperture_radius = -1\n", "test.toml:4:19:", {"camera.aperture_radius is -1", "≥ 0"});
+    expect_error(camera + "f_stop = 0\n", "test.toml:4:10:", {"positive f-number"});
+    expect_error(camera + "focal_length = 50\n", "test.toml:4:16:", {"f_stop beside a focal length"});
+    expect_error(camera + "aperture_blades = 1\n", "test.toml:4:19:", {"3 to 64 blades"});
+    expect_error(camera + "focus_distance = 0\n", "test.toml:4:18:", {"positive distance"});
+    expect_error(
+        "[camera]\ntype = \"orthographic\"\nheight = 2\nposition = [0, 0, 5]\nlook_at = [0, 0, 0]\nf_stop = 2\n",
+        "test.toml:6:10:", {"focal_length beside f_stop"});
 }
 
 TEST(TomlSceneErrors, ZeroScale) {

@@ -50,7 +50,11 @@ CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& cam
     CameraSample sample;
     sample.film_position = Vec2((float(x) + 0.5f) + fs.offset.x, (float(y) + 0.5f) + fs.offset.y);
     sample.filter_weight = fs.weight;
-    const Ray ray = camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height));
+    // The lens takes a sampler dimension only when there is a lens, so that a pinhole
+    // camera's images stay what they were.
+    const Vec2 u_lens = camera.lens().is_pinhole() ? Vec2() : context.sampler.next_2d();
+    const Ray ray =
+        camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height), u_lens);
     sample.radiance = Li(scene, ray, context);
     return sample;
 }

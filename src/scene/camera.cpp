@@ -19,6 +19,8 @@ Camera::Camera(Projection projection, const Vec3& eye, const Vec3& target, const
         throw std::invalid_argument("camera up vector is parallel to the view direction");
     right_ = normalize(side);                  // I_x = d_c × u_c
     up_ = normalize(cross(right_, forward_));  // u_c made orthogonal to d_c
+    // A lens given later focuses on the target unless told otherwise.
+    lens_.focus_distance = length(view);
 }
 
 Camera Camera::perspective(const Vec3& eye, const Vec3& target, const Vec3& up, float vertical_fov) {
@@ -37,19 +39,37 @@ Camera Camera::orthographic(const Vec3& eye, const Vec3& target, const Vec3& up,
     return c;
 }
 
-Ray Camera::generate_ray(float x, float y, int width, int height) const {
+void Camera::set_lens(const ThinLens& lens) {
+    if (!(lens.aperture_radius >= 0.0f && std::isfinite(lens.aperture_radius)))
+        throw std::invalid_argument("aperture radius must be zero or positive");
+    if (!(lens.focus_distance > 0.0f && std::isfinite(lens.focus_distance)))
+        throw std::invalid_argument("focus distance must be positive");
+    if (lens.blades == 1 || lens.blades == 2) throw std::invalid_argument("an aperture has 0 (round) or 3+ blades");
+    if (!std::isfinite(lens.rotation)) throw std::invalid_argument("aperture rotation must be finite");
+    lens_ = lens;
+}
+
+Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 u_lens) const {
     // Screen position in [-1, 1]², (-1, -1) bottom-left (handout §4.2.2).
     const float sx = 2.0f * x / float(width) - 1.0f;
     const float sy = 1.0f - 2.0f * y / float(height);
     const float aspect = float(width) / float(height);
+    Vec3 origin = eye_, direction = forward_;
     if (projection_ == Projection::Orthographic) {
         const float half_h = 0.5f * view_height_;
-        const Vec3 origin = eye_ + right_ * (sx * half_h * aspect) + up_ * (sy * half_h);
-        return {origin, forward_};
+        origin = eye_ + right_ * (sx * half_h * aspect) + up_ * (sy * half_h);
+    } else {
+        const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
+        direction = forward_ + (right_ * (sx * aspect) + up_ * sy) * tan_half;
     }
-    const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
-    const Vec3 d = forward_ + (right_ * (sx * aspect) + up_ * sy) * tan_half;
-    return {eye_, normalize(d)};
+    if (lens_.is_pinhole()) return {origin, projection_ == Projection::Orthographic ? forward_ : normalize(direction)};
+    // The pinhole ray meets the plane of focus at origin + direction·focus_distance (its
+    // direction has unit length along forward); the lens ray leaves from a point of the
+    // aperture and passes there (pbrt-v4's PerspectiveCamera::GenerateRay).
+    const Vec3 focus = origin + direction * lens_.focus_distance;
+    const Vec2 a = lens_.sample_aperture(u_lens);
+    const Vec3 from = origin + right_ * a.x + up_ * a.y;
+    return {from, normalize(focus - from)};
 }
 
 std::optional<Vec2> Camera::project(const Vec3& p, int width, int height) const {

@@ -38,6 +38,7 @@ OrbitCamera OrbitCamera::from(const Camera& camera, float focus_distance) {
     orbit.projection_ = camera.projection();
     orbit.vertical_fov_ = camera.vertical_fov();
     orbit.view_height_ = camera.view_height();
+    orbit.lens_ = camera.lens();
     Vec3 a, b;
     horizontal_axes(orbit.up_, a, b);
     const Vec3 to_eye = -camera.forward();
@@ -54,8 +55,10 @@ Vec3 OrbitCamera::eye() const {
 }
 
 Camera OrbitCamera::camera() const {
-    return projection_ == Projection::Orthographic ? Camera::orthographic(eye(), target_, up_, view_height_)
-                                                   : Camera::perspective(eye(), target_, up_, vertical_fov_);
+    Camera view = projection_ == Projection::Orthographic ? Camera::orthographic(eye(), target_, up_, view_height_)
+                                                          : Camera::perspective(eye(), target_, up_, vertical_fov_);
+    view.set_lens(lens_);
+    return view;
 }
 
 void OrbitCamera::orbit(float yaw, float pitch) {
@@ -104,6 +107,12 @@ std::string OrbitCamera::toml() const {
                         e.x, e.y, e.z, target_.x, target_.y, target_.z, up_.x, up_.y, up_.z);
     text += projection_ == Projection::Orthographic ? fmt::format("height = {:.7g}\n", view_height_)
                                                     : fmt::format("fov = {:.7g}\n", vertical_fov_);
+    if (!lens_.is_pinhole()) {
+        text += fmt::format("aperture_radius = {:.7g}\nfocus_distance = {:.7g}\n", lens_.aperture_radius,
+                            lens_.focus_distance);
+        if (lens_.blades != 0)
+            text += fmt::format("aperture_blades = {}\naperture_rotation = {:.7g}\n", lens_.blades, lens_.rotation);
+    }
     return text;
 }
 

@@ -34,7 +34,8 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     s.height = count(t, "height", s.height, 1, SettingLimits::kMaxImageSide);
     // Samples per pixel, as on the command line: N² for N×N stratified samples.
     const std::optional<uint32_t> n = samples_per_axis(count(t, "spp", 1, 1, SettingLimits::kMaxSpp));
-    if (!n) t.fail("spp", "a square number of samples per pixel (1, 4, 9, 16, ...): Glint takes N×N stratified samples");
+    if (!n)
+        t.fail("spp", "a square number of samples per pixel (1, 4, 9, 16, ...): Glint takes N×N stratified samples");
     s.samples_per_axis = *n;
     s.max_depth = count(t, "max_depth", s.max_depth, 0, SettingLimits::kMaxDepth);
     const int64_t seed = t.integer("seed", 0);
@@ -53,6 +54,47 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     t.reject_unknown_keys();
 }
 
+/// The 35 mm film format's height, for an f-number given without a focal length.
+constexpr float kFullFrameHeightMm = 24.0f;
+
+/// The `[camera]` lens keys (docs/scene-format.md): `aperture_radius` in world units, or
+/// `f_stop` with `focal_length` in millimetres (scene units taken as metres, as glTF's);
+/// `focus_distance` defaults to the distance to look_at. `vertical_fov` is 0 for an
+/// orthographic camera, which then needs an explicit focal length for an f-number.
+ThinLens read_lens(const ParamTable& t, float vertical_fov, float look_at_distance) {
+    ThinLens lens;
+    if (t.find("aperture_radius") && t.find("f_stop")) t.fail("f_stop", "either aperture_radius or f_stop, not both");
+    if (t.find("aperture_radius")) {
+        lens.aperture_radius = t.number("aperture_radius", 0.0f);
+        if (!(lens.aperture_radius >= 0.0f)) t.fail("aperture_radius", "an aperture radius ≥ 0 in world units");
+    }
+    if (t.find("focal_length") && !t.find("f_stop")) t.fail("focal_length", "f_stop beside a focal length");
+    if (t.find("f_stop")) {
+        const float f_stop = t.number("f_stop", 0.0f);
+        if (!(f_stop > 0.0f)) t.fail("f_stop", "a positive f-number (2.8, 8, ...)");
+        float focal_mm = 0.0f;
+        if (t.find("focal_length")) {
+            focal_mm = t.number("focal_length", 0.0f);
+            if (!(focal_mm > 0.0f)) t.fail("focal_length", "a positive focal length in millimetres");
+        } else if (vertical_fov > 0.0f) {
+            // The lens that gives this field of view on 35 mm film.
+            focal_mm = 0.5f * kFullFrameHeightMm / std::tan(radians(vertical_fov) * 0.5f);
+        } else {
+            t.fail("f_stop", "aperture_radius, or focal_length beside f_stop: an orthographic camera has no fov");
+        }
+        lens.aperture_radius = 0.001f * focal_mm / (2.0f * f_stop);
+    }
+    lens.focus_distance = look_at_distance;  // zero when the camera is degenerate: Camera says so
+    if (t.find("focus_distance")) {
+        lens.focus_distance = t.number("focus_distance", 0.0f);
+        if (!(lens.focus_distance > 0.0f)) t.fail("focus_distance", "a positive distance in world units");
+    }
+    lens.blades = count(t, "aperture_blades", 0, 0, 64);
+    if (lens.blades == 1 || lens.blades == 2) t.fail("aperture_blades", "0 for a round aperture, or 3 to 64 blades");
+    lens.rotation = t.number("aperture_rotation", 0.0f);
+    return lens;
+}
+
 Camera read_camera(const ParamTable& t) {
     const std::string type = t.choice("type", kProjections, "perspective");
     const Vec3 position = t.require_vec3("position");
@@ -66,10 +108,13 @@ Camera read_camera(const ParamTable& t) {
         size = t.require_number("height");
         if (!(size > 0.0f)) t.fail("height", "a positive view height in world units");
     }
+    const ThinLens lens = read_lens(t, type == "perspective" ? size : 0.0f, length(look_at - position));
     t.reject_unknown_keys();
     try {
-        return type == "perspective" ? Camera::perspective(position, look_at, up, size)
-                                     : Camera::orthographic(position, look_at, up, size);
+        Camera camera = type == "perspective" ? Camera::perspective(position, look_at, up, size)
+                                              : Camera::orthographic(position, look_at, up, size);
+        camera.set_lens(lens);
+        return camera;
     } catch (const std::invalid_argument& e) {
         t.fail_here(
             fmt::format("camera: {}; expected distinct position and look_at and an up vector off the view "

@@ -1,6 +1,6 @@
 #pragma once
 /// \file Warps from the unit square to the domains a path tracer samples: disk, hemisphere,
-/// sphere, cone, triangle and a cosine-power lobe, each with its density.
+/// sphere, cone, triangle, regular polygon and a cosine-power lobe, each with its density.
 ///
 /// Every direction is in a local frame whose +z is the normal or axis (turn it into world
 /// space with `orthonormal_basis`, math/frame.h). The `u` components are in [0, 1). Solid-angle
@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace glint {
 
@@ -119,6 +120,26 @@ namespace glint {
         b0 = u.x - b1;
     }
     return {b0, b1, 1.0f - b0 - b1};
+}
+
+/// A point uniform over the regular polygon with `sides` (≥ 3) corners on the unit circle,
+/// the first at angle `rotation` (radians): u.x picks one of the equal wedges (centre, corner
+/// k, corner k+1) and is rescaled, so strata in u.x stay strata; the wedge is then sampled
+/// by `sample_uniform_triangle`. Density 1/`regular_polygon_area(sides)`. A camera's
+/// aperture with blades (bokeh shaped like the diaphragm).
+[[nodiscard]] inline Vec2 sample_uniform_regular_polygon(Vec2 u, uint32_t sides, float rotation) {
+    const float scaled = u.x * float(sides);
+    const uint32_t wedge = std::min(uint32_t(scaled), sides - 1);
+    const float step = 2.0f * kPi / float(sides);
+    const float a0 = rotation + step * float(wedge), a1 = a0 + step;
+    // Barycentrics of (centre, corner k, corner k+1); the centre is the origin.
+    const std::array<float, 3> b = sample_uniform_triangle({scaled - float(wedge), u.y});
+    return {b[1] * std::cos(a0) + b[2] * std::cos(a1), b[1] * std::sin(a0) + b[2] * std::sin(a1)};
+}
+
+/// Area of the regular polygon with `sides` corners on the unit circle: (n/2)·sin(2π/n).
+[[nodiscard]] inline float regular_polygon_area(uint32_t sides) {
+    return 0.5f * float(sides) * std::sin(2.0f * kPi / float(sides));
 }
 
 /// Directions about +z with density (n+1)/(2π) cos^n θ on the upper hemisphere (Phong's lobe;

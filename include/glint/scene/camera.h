@@ -1,9 +1,10 @@
 #pragma once
-/// \file Pinhole (perspective) and orthographic cameras.
+/// \file Perspective and orthographic cameras, pinhole or with a thin lens (depth of field).
 
 #include "glint/math/ray.h"
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
+#include "glint/scene/thin_lens.h"
 
 #include <optional>
 
@@ -23,13 +24,20 @@ public:
     /// `view_height`: height of the visible region in world units.
     [[nodiscard]] static Camera orthographic(const Vec3& eye, const Vec3& target, const Vec3& up, float view_height);
 
+    /// Give the camera a lens: depth of field (scene/thin_lens.h). Throws
+    /// std::invalid_argument for a negative or non-finite aperture, a focus distance that is
+    /// not positive, or 1 or 2 blades.
+    void set_lens(const ThinLens& lens);
+    [[nodiscard]] const ThinLens& lens() const { return lens_; }
+
     /// Ray through the film position (x, y) in pixels, (0, 0) = top-left corner of the
     /// image, (width, height) = bottom-right; the aspect ratio is width/height. Directions
-    /// are unit length.
-    [[nodiscard]] Ray generate_ray(float x, float y, int width, int height) const;
+    /// are unit length. With a lens, `u_lens` picks the point of the aperture the ray leaves
+    /// from (ThinLens::sample_aperture); a pinhole ignores it.
+    [[nodiscard]] Ray generate_ray(float x, float y, int width, int height, Vec2 u_lens = {}) const;
     /// Where world point `p` appears on a `width`×`height` film: the (x, y) that
-    /// generate_ray() turns into a ray through `p`; none for a point behind the eye. Used to
-    /// draw rays over the image.
+    /// generate_ray() turns into a ray through `p` (for a lens: the ray from the aperture's
+    /// centre); none for a point behind the eye. Used to draw rays over the image.
     [[nodiscard]] std::optional<Vec2> project(const Vec3& p, int width, int height) const;
 
     [[nodiscard]] Projection projection() const { return projection_; }
@@ -47,6 +55,7 @@ private:
     Vec3 eye_, forward_, right_, up_;
     float vertical_fov_ = 52.0f;  // degrees
     float view_height_ = 2.0f;
+    ThinLens lens_;
 };
 
 }  // namespace glint

@@ -46,6 +46,8 @@ private:
     Projection projection_ = Projection::Perspective;
     float vertical_fov_ = 52.0f;  // degrees
     float view_height_ = 2.0f;
+    /// The scene camera's lens, kept as it was (its plane of focus does not follow the orbit).
+    ThinLens lens_;
 };
 
 }  // namespace glint

@@ -1,0 +1,50 @@
+#pragma once
+/// \file The thin lens: depth of field for a camera (Potmesil & Chakravarty 1981; Cook,
+/// Porter & Carpenter 1984; pbrt-v4 §5.2.3).
+///
+/// A ray leaves a point of the aperture (a disk, or a regular polygon for a diaphragm with
+/// blades) and passes through the point of the plane of focus that the pinhole ray through
+/// the same film position meets. Points on that plane (normal to the view direction, at
+/// `focus_distance` from the eye) are sharp; a point at depth z along the view direction
+/// spreads over a disk (or polygon) of radius
+///
+///     r(z) = aperture_radius · |1 − focus_distance / z|
+///
+/// measured in the plane of focus; on the image that is r(z) / (focus_distance · tan(fov/2))
+/// half-heights. That is the thin-lens circle of confusion c = A·f·|z − z_f| / (z·(z_f − f))
+/// (A the aperture diameter, f the focal length) scaled from the sensor to the plane of focus.
+
+#include "glint/math/constants.h"
+#include "glint/math/vec2.h"
+#include "glint/sampling/warp.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace glint {
+
+struct ThinLens {
+    /// Radius of the aperture in world units; 0 is a pinhole (everything sharp).
+    float aperture_radius = 0.0f;
+    /// Distance from the eye to the plane of focus, along the view direction, world units.
+    /// A camera's starts at the distance to its look-at point.
+    float focus_distance = 1.0f;
+    /// Number of diaphragm blades: 0 for a round aperture, else 3 or more (a regular
+    /// polygon whose corners lie on the aperture's circle).
+    uint32_t blades = 0;
+    /// Turn of the polygon in degrees (its first corner at this angle from the camera's
+    /// right axis, counter-clockwise as seen from behind the camera).
+    float rotation = 0.0f;
+
+    [[nodiscard]] bool is_pinhole() const { return !(aperture_radius > 0.0f); }
+
+    /// A point of the aperture in world units, (right, up) in the lens plane, uniform over its
+    /// area: stratified `u` give stratified points (concentric disk map; polygon wedges).
+    [[nodiscard]] Vec2 sample_aperture(Vec2 u) const {
+        const Vec2 p = blades == 0 ? sample_uniform_disk_concentric(u)
+                                   : sample_uniform_regular_polygon(u, blades, radians(rotation));
+        return p * aperture_radius;
+    }
+};
+
+}  // namespace glint
