@@ -15,6 +15,7 @@
 #include "glint/util/file_extension.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <unistd.h>
 #include <filesystem>
@@ -29,8 +30,10 @@ namespace {
 /// before allocating any of it.
 void check_memory(const glint::RenderSettings& s) {
     const double pixels = double(s.width) * double(s.height);
-    // The film (Σw·L and Σw), the image it becomes, and the writer's encoded copy.
-    const double needed = pixels * (sizeof(glint::Color) + sizeof(float) + 2 * 3 * sizeof(float));
+    // The film (Σw·L and Σw), the image it becomes, and the writer's encoded copy; with
+    // AOVs, their film and channels (at most 14) in both copies.
+    const double aov_bytes = s.aovs.empty() ? 0.0 : double(sizeof(glint::AovPixel)) + 2 * 14 * sizeof(float);
+    const double needed = pixels * (double(sizeof(glint::FilmPixel)) + 2 * 3 * sizeof(float) + aov_bytes);
     const double available = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
     if (available > 0.0 && needed > available)
         throw std::invalid_argument(
@@ -47,6 +50,16 @@ std::optional<glint::DisplayAddress> display_address(const RenderOptions& opt) {
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(std::string("--display-server: ") + e.what());
     }
+}
+
+/// AOVs are extra channels of an EXR: refuse any other output before rendering.
+void check_aov_output(const glint::RenderSettings& s, const std::string& output) {
+    if (s.aovs.empty() || glint::lower_case_extension(output) == ".exr") return;
+    std::vector<std::string_view> names;
+    for (const glint::Aov aov : s.aovs) names.push_back(glint::aov_name(aov));
+    throw std::invalid_argument(fmt::format(
+        "{}: AOVs ({}) are written as extra channels of an EXR image, which {} cannot hold; expected -o NAME.exr",
+        output, fmt::join(names, ", "), glint::lower_case_extension(output)));
 }
 
 /// Stopped while loading or building, before a pixel was rendered: an empty image would only
@@ -70,6 +83,7 @@ int run_render(const RenderOptions& opt) {
         output =
             opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
     glint::check_output_path(output);
+    check_aov_output(checked, output);
     const std::optional<glint::DisplayAddress> display = display_address(opt);
     // From here on a first Ctrl-C is a request to stop, never a kill that loses the image.
     const std::filesystem::path checkpoint = glint::checkpoint_path_for(output);
@@ -85,6 +99,7 @@ int run_render(const RenderOptions& opt) {
 
     glint::RenderSettings& s = loaded.settings;
     apply_overrides(opt.overrides, s);
+    check_aov_output(s, output);
     check_memory(s);
     const double load_seconds = seconds_since(load_start);
     if (interrupt.stop()) return stopped_before_rendering(interrupt);
@@ -96,9 +111,12 @@ int run_render(const RenderOptions& opt) {
 
     glint::Film film(s.width, s.height);
     glint::TileGrid tiles(s.width, s.height);
+    std::optional<glint::AovFilm> aov_film;
+    if (!s.aovs.empty()) aov_film.emplace(s.width, s.height, s.aovs);
+    glint::AovFilm* const aovs = aov_film ? &*aov_film : nullptr;
     const glint::RenderFingerprint fingerprint = glint::render_fingerprint(opt.scene_path, s);
     if (opt.resume) {
-        glint::read_checkpoint(checkpoint, fingerprint, film, tiles);
+        glint::read_checkpoint(checkpoint, fingerprint, film, tiles, aovs);
         if (!opt.quiet)
             fmt::print(stderr, "resuming {}: {} of {} tiles were rendered\n", checkpoint.string(), tiles.done_count(),
                        tiles.count());
@@ -119,7 +137,7 @@ int run_render(const RenderOptions& opt) {
         const std::unique_lock lock(checkpoint_mutex, std::try_to_lock);
         if (!lock || checkpoint_failed || seconds_since(last_checkpoint) < *opt.checkpoint_every) return;
         try {
-            glint::write_checkpoint(checkpoint, fingerprint, film, tiles);
+            glint::write_checkpoint(checkpoint, fingerprint, film, tiles, aovs);
         } catch (const glint::CheckpointError& e) {
             checkpoint_failed = true;  // say it once; the render goes on
             warn(e.what());
@@ -136,19 +154,23 @@ int run_render(const RenderOptions& opt) {
             bar.update(done, total);
             save_checkpoint_if_due();
         },
-        &interrupt.stop(), &tiles);
+        &interrupt.stop(), &tiles, aovs);
     bar.finish();
     if (stream) stream->finish();
 
     glint::WriteOptions write_options;
     write_options.exposure = opt.exposure;
+    // The image with the AOVs' channels after its own.
+    auto image = [&](bool sample_counts) {
+        const glint::Image beauty = film.to_image(sample_counts);
+        return aovs ? aovs->append_to(beauty) : beauty;
+    };
     if (!stats.complete()) {
         // Interrupted: keep what is rendered. EXR says per pixel how many samples it has
         // (0 where no tile reached); other formats show unrendered pixels black. The
         // checkpoint lets --resume finish the same image.
-        write_options.fourth_channel = "samples";
-        glint::write_image(output, film.to_image(true), write_options);
-        glint::write_checkpoint(checkpoint, fingerprint, film, tiles);
+        glint::write_image(output, image(true), write_options);
+        glint::write_checkpoint(checkpoint, fingerprint, film, tiles, aovs);
         fmt::print(stderr,
                    "interrupted: wrote the {} of {} tiles rendered to {}{}; checkpoint {} (continue with --resume)\n",
                    stats.tiles_done, stats.tiles, output,
@@ -156,7 +178,7 @@ int run_render(const RenderOptions& opt) {
                    checkpoint.string());
         return 128 + interrupt.signal();
     }
-    glint::write_image(output, film.to_image(), write_options);
+    glint::write_image(output, image(false), write_options);
     std::error_code ec;
     std::filesystem::remove(checkpoint, ec);  // the image is whole: nothing to resume
 

@@ -4,6 +4,9 @@
 #include "glint/integrators/integrator_registry.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include <stdexcept>
 #include <vector>
@@ -16,6 +19,22 @@ uint32_t in_range(std::string_view name, int64_t value, int64_t lo, int64_t hi, 
             "{}: expected {}; got {}", name,
             expected.empty() ? fmt::format("an integer from {} to {}", lo, hi) : std::string(expected), value));
     return static_cast<uint32_t>(value);
+}
+
+std::vector<Aov> parse_aov_list(std::string_view list) {
+    std::vector<Aov> aovs;
+    std::size_t start = 0;
+    while (start <= list.size()) {
+        const std::size_t end = std::min(list.find(',', start), list.size());
+        const std::string_view name = list.substr(start, end - start);
+        const std::optional<Aov> aov = aov_from_name(name);
+        if (!aov)
+            throw std::invalid_argument(fmt::format("--aov: expected a comma-separated list of {}; got '{}'",
+                                                    fmt::join(aov_names(), ", "), name));
+        if (std::find(aovs.begin(), aovs.end(), *aov) == aovs.end()) aovs.push_back(*aov);
+        start = end + 1;
+    }
+    return aovs;
 }
 
 void apply_overrides(const RenderOverrides& opt, RenderSettings& s) {
@@ -54,6 +73,7 @@ void apply_overrides(const RenderOverrides& opt, RenderSettings& s) {
     if (opt.light_samples)
         s.light_samples = in_range("--light-samples", *opt.light_samples, 1, Limits::kMaxLightSamples);
     if (opt.mis) s.mis = *opt.mis == "balance" ? glint::MisHeuristic::Balance : glint::MisHeuristic::Power;
+    if (opt.aov) s.aovs = parse_aov_list(*opt.aov);
 }
 
 void add_render_overrides(CLI::App* command, RenderOverrides& o) {
@@ -75,6 +95,8 @@ void add_render_overrides(CLI::App* command, RenderOverrides& o) {
                         "Whitted: samples per area light per shading point (1 to 1024)");
     command->add_option("--mis", o.mis, "Path: multiple importance sampling heuristic")
         ->check(CLI::IsMember({"balance", "power"}));
+    command->add_option("--aov", o.aov,
+                        "Extra EXR channels, comma-separated: albedo, normal, depth, position, spp, variance");
 }
 
 }  // namespace glint::app

@@ -116,6 +116,9 @@ check_refused "--filter-radius: expected a radius in pixels above 0 and at most 
 check_refused "--threads: expected 0 (all cores) or a thread count up to 1024" --threads -1
 check_refused "--aperture: expected a lens radius ≥ 0 in world units (0: a pinhole); got -0.5" --aperture -0.5
 check_refused "--focus: expected a positive distance in world units; got 0" --focus 0
+check_refused "--aov: expected a comma-separated list of albedo, normal, depth, position, spp, variance; got 'zdepth'" \
+  --aov albedo,zdepth
+check_refused "refused.png: AOVs (depth) are written as extra channels of an EXR image" --aov depth
 if "$glint" render -o refused.png --spp abc 2>/dev/null; then fail "--spp abc accepted"; else
   [ $? -eq 1 ] || fail "a malformed number does not exit with 1"; fi
 
@@ -205,6 +208,19 @@ wait_for resumed.pfm.checkpoint; kill -INT $pid; wait $pid
 "$glint" render "${res[@]}" -o resumed.pfm --resume 2>err.txt || fail "--resume failed: $(cat err.txt)"
 cmp -s whole.pfm resumed.pfm || fail "the resumed image differs from the uninterrupted one"
 [ -e resumed.pfm.checkpoint ] && fail "a finished render left its checkpoint"
+# With AOVs the checkpoint keeps their sums too: the resumed EXR equals the whole one in
+# every channel.
+if command -v idiff >/dev/null; then
+  aov=("${res[@]}" --aov albedo,depth,spp,variance)
+  "$glint" render "${aov[@]}" -o whole_aov.exr || fail "render with AOVs failed"
+  "$glint" render "${aov[@]}" -o resumed_aov.exr --checkpoint-every 0.1 2>/dev/null & pid=$!
+  wait_for resumed_aov.exr.checkpoint; kill -INT $pid; wait $pid
+  "$glint" render "${aov[@]}" -o resumed_aov.exr --resume 2>err.txt || fail "--resume with AOVs: $(cat err.txt)"
+  idiff -fail 0 -warn 0 whole_aov.exr resumed_aov.exr >idiff.txt ||
+    fail "the resumed AOVs differ from the uninterrupted ones: $(cat idiff.txt)"
+else
+  echo "skipped: idiff (openimageio-tools) is not installed; resuming with AOVs is unchecked"
+fi
 "$glint" render "${res[@]}" -o killed.pfm --checkpoint-every 0.1 & pid=$!
 wait_for killed.pfm.checkpoint; kill -KILL $pid; wait $pid 2>/dev/null
 [ -s killed.pfm.checkpoint ] || fail "--checkpoint-every left no checkpoint behind a killed render"

@@ -39,10 +39,11 @@ TEST(TomlSceneErrors, UnknownSection) {
 }
 
 TEST(TomlSceneErrors, UnknownKeyWithoutCloseMatchListsTheKeys) {
-    expect_error("[render]\nwidth = 64\ncolour_space = \"srgb\"\n", "test.toml:3:1:",
-                 {"unknown key 'colour_space'",
-                  "expected one of: filter, filter_radius, height, integrator, light_samples, max_depth, mis, seed, "
-                  "spp, width"});
+    expect_error(
+        "[render]\nwidth = 64\ncolour_space = \"srgb\"\n", "test.toml:3:1:",
+        {"unknown key 'colour_space'",
+         "expected one of: aovs, filter, filter_radius, height, integrator, light_samples, max_depth, mis, seed, "
+         "spp, width"});
 }
 
 TEST(TomlSceneErrors, UnknownKeyInsideTransform) {
@@ -216,6 +217,15 @@ TEST(TomlScene, CameraLensFromApertureOrFStop) {
     // Without a focal length, the one that gives a 40° fov on 35 mm film (24 mm high).
     const ThinLens from_fov = load(camera + "f_stop = 4\n").scene.camera.lens();
     EXPECT_FLOAT_EQ(from_fov.aperture_radius, 0.001f * (12.0f / std::tan(radians(20.0f))) / 8.0f);
+}
+
+TEST(TomlScene, AovsInOrderEachOnce) {
+    const LoadedScene loaded = load("[render]\naovs = [\"depth\", \"albedo\", \"depth\", \"variance\"]\n");
+    EXPECT_EQ(loaded.settings.aovs, (std::vector<Aov>{Aov::Depth, Aov::Albedo, Aov::Variance}));
+    expect_error(
+        "[render]\naovs = [\"albedo\", \"Z\"]\n", "test.toml:2:19:",
+        {"render.aovs[1] is the string \"Z\"", "expected one of albedo, normal, depth, position, spp, variance"});
+    expect_error("[render]\naovs = \"albedo\"\n", "test.toml:2:8:", {"render.aovs", "array"});
 }
 
 TEST(TomlSceneErrors, LensKeys) {

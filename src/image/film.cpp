@@ -10,6 +10,8 @@ Color Film::at(uint32_t x, uint32_t y) const {
 Image Film::to_image(bool sample_counts) const {
     const int channels = sample_counts ? 4 : 3;
     Image img(int(width_), int(height_), channels);
+    img.channel_names = {"R", "G", "B"};
+    if (sample_counts) img.channel_names.emplace_back("samples");
     for (uint32_t y = 0; y < height_; ++y)
         for (uint32_t x = 0; x < width_; ++x) {
             const Color c = at(x, y);

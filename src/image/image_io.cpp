@@ -65,6 +65,7 @@ Image read_pixels(OIIO::ImageInput& input, const std::string& name, ColorEncodin
     if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
         throw ImageError(name + ": cannot read image: " + input.geterror());
     input.close();
+    image.channel_names.assign(spec.channelnames.begin(), spec.channelnames.end());
 
     const bool integer_data =
         !(spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
@@ -170,8 +171,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
     if (image.empty()) throw ImageError(path.string() + ": nothing to write (empty image)");
 
     const bool keep_linear = is_float_format(ext);
-    const bool fourth = ext == ".exr" && !options.fourth_channel.empty() && image.channels >= 4;
-    const int channels = fourth ? 4 : std::min(image.channels, 3);
+    // EXR keeps every named channel; the other formats take R, G, B.
+    const bool named = ext == ".exr" && image.channel_names.size() == std::size_t(image.channels);
+    const int channels = named ? image.channels : std::min(image.channels, 3);
     std::vector<float> data(std::size_t(image.width) * image.height * channels);
     const float gain = std::exp2(options.exposure);
     for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
@@ -192,9 +194,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
         if (!output) throw ImageError(path.string() + ": cannot create a writer: " + OIIO::geterror());
         OIIO::ImageSpec spec(image.width, image.height, channels,
                              keep_linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-        if (fourth) {
-            spec.channelnames = {"R", "G", "B", options.fourth_channel};
-            spec.alpha_channel = -1;  // a count, not coverage
+        if (named) {
+            spec.channelnames = image.channel_names;
+            spec.alpha_channel = -1;  // no channel is coverage: a fourth one is a count or an AOV
         }
         spec.attribute("oiio:ColorSpace", keep_linear ? "Linear" : "sRGB");
         spec.attribute("Software", "Glint");

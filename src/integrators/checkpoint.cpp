@@ -5,6 +5,7 @@
 #include "glint/util/move_into_place.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cstring>
 #include <fstream>
@@ -20,7 +21,8 @@ namespace {
 // Layout (native byte order: a checkpoint resumes on the machine kind that wrote it):
 //   "GLINTCKP", u32 version, u32 item count, items as (u32 length, bytes) name/value pairs,
 //   u32 width, u32 height, u32 tile count, one byte per tile (1 = finished), then the
-//   FilmPixel records of every finished tile in tile order, row by row within the tile.
+//   FilmPixel records of every finished tile in tile order, row by row within the tile, each
+//   tile's followed by its AovPixel records when the render has AOVs (its fingerprint says).
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'C', 'K', 'P'};
 constexpr uint32_t kVersion = 1;
 
@@ -57,6 +59,11 @@ RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, co
     f.emplace_back("filter_radius", fmt::format("{}", s.filter_radius));
     f.emplace_back("light_samples", std::to_string(s.light_samples));
     f.emplace_back("mis", s.mis == MisHeuristic::Balance ? "balance" : "power");
+    if (!s.aovs.empty()) {
+        std::vector<std::string_view> names;
+        for (const Aov aov : s.aovs) names.push_back(aov_name(aov));
+        f.emplace_back("aovs", fmt::format("{}", fmt::join(names, ",")));
+    }
     return f;
 }
 
@@ -73,7 +80,7 @@ std::filesystem::path temporary_checkpoint_path(const std::filesystem::path& pat
 }
 
 void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint& fingerprint, const Film& film,
-                      const TileGrid& tiles) {
+                      const TileGrid& tiles, const AovFilm* aovs) {
     ByteWriter w;
     w.raw(kMagic, sizeof kMagic);
     w.u32(kVersion);
@@ -95,6 +102,9 @@ void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint
         const auto [x0, y0, x1, y1] = tiles.bounds(t);
         for (uint32_t y = y0; y < y1; ++y)
             w.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
+        if (aovs)
+            for (uint32_t y = y0; y < y1; ++y)
+                w.raw(&aovs->pixels()[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(AovPixel));
     }
     const std::filesystem::path tmp = temporary_checkpoint_path(path);
     {
@@ -146,8 +156,8 @@ std::string fingerprint_differences(const RenderFingerprint& saved, const Render
 
 }  // namespace
 
-void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film,
-                     TileGrid& tiles) {
+void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film, TileGrid& tiles,
+                     AovFilm* aovs) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw CheckpointError(path.string() +
@@ -171,6 +181,9 @@ void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint&
             const auto [x0, y0, x1, y1] = tiles.bounds(t);
             for (uint32_t y = y0; y < y1; ++y)
                 r.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
+            if (aovs)
+                for (uint32_t y = y0; y < y1; ++y)
+                    r.raw(&aovs->pixels()[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(AovPixel));
             tiles.mark_done(t);
         }
         if (!r.at_end()) malformed();

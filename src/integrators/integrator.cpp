@@ -101,7 +101,8 @@ RayTree Integrator::record_sample(const RenderScene& scene, const RenderSettings
 }
 
 RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
-                               const ProgressCallback& progress, const std::atomic<bool>* stop, TileGrid* tiles) const {
+                               const ProgressCallback& progress, const std::atomic<bool>* stop, TileGrid* tiles,
+                               AovFilm* aovs) const {
     if (settings.samples_per_axis == 0) throw std::invalid_argument("samples per axis must be at least 1");
     const Filter filter(settings.filter, settings.filter_radius);
     const auto start = std::chrono::steady_clock::now();
@@ -120,12 +121,16 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
         const auto [x0, y0, x1, y1] = grid.bounds(tile);
         Sampler sampler(settings.seed, n);
         TraceContext context{sampler};
+        FirstHit first_hit;
+        if (aovs) context.first_hit = &first_hit;
         for (uint32_t y = y0; y < y1; ++y)
             for (uint32_t x = x0; x < x1; ++x)
                 for (uint32_t index = 0; index < n * n; ++index) {
+                    first_hit.hit = false;
                     const CameraSample sample =
                         take_sample(scene, scene.camera(), filter, x, y, index, width, height, context);
                     film.add_sample(x, y, sample.radiance, sample.filter_weight);
+                    if (aovs) aovs->add_sample(x, y, first_hit, sample.radiance);
                 }
         rays += context.rays;
         grid.mark_done(tile);

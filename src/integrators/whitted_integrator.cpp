@@ -101,6 +101,7 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     // The ray being shaded (context.node changes as the children are traced).
     const int32_t node = Record ? context.node : -1;
     if constexpr (Record) context.tree->set_normal(node, sp.n);
+    if (depth == 0 && context.first_hit) record_first_hit(*context.first_hit, ray, si, sp, m, texture);
 
     Color radiance = scene.emitted(object, m, si, sp.wo);
     const float t = std::clamp(m.transparency, 0.0f, 1.0f);

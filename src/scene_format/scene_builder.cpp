@@ -9,7 +9,12 @@
 #include "glint/scene_format/build_context.h"
 #include "glint/scene_format/registry.h"
 
+#include "glint/scene_format/did_you_mean.h"
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include <array>
 
@@ -27,6 +32,23 @@ uint32_t count(const ParamTable& t, std::string_view key, int64_t fallback, int6
     const int64_t n = t.integer(key, fallback);
     if (n < min || n > max) t.fail(key, fmt::format("an integer from {} to {}", min, max));
     return static_cast<uint32_t>(n);
+}
+
+/// `aovs = ["albedo", ...]`: names from aov_names(); one named twice is taken once.
+std::vector<Aov> read_aovs(const ParamTable& t) {
+    std::vector<Aov> aovs;
+    const ParamValue* list = t.find("aovs");
+    if (!list) return aovs;
+    const ParamValue::Array& names = list->as_array(t.name_of("aovs"));
+    const std::vector<std::string> known(aov_names().begin(), aov_names().end());
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        const std::string what = fmt::format("{}[{}]", t.name_of("aovs"), i);
+        const std::string& name = names[i].as_string(what);
+        const std::optional<Aov> aov = aov_from_name(name);
+        if (!aov) names[i].fail(what, fmt::format("one of {}{}", fmt::join(known, ", "), did_you_mean(name, known)));
+        if (std::find(aovs.begin(), aovs.end(), *aov) == aovs.end()) aovs.push_back(*aov);
+    }
+    return aovs;
 }
 
 void read_render(const ParamTable& t, RenderSettings& s) {
@@ -51,6 +73,7 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     s.integrator = t.choice("integrator", integrators, s.integrator);
     s.light_samples = count(t, "light_samples", s.light_samples, 1, SettingLimits::kMaxLightSamples);
     s.mis = t.choice("mis", kMisHeuristics, "power") == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
+    s.aovs = read_aovs(t);
     t.reject_unknown_keys();
 }
 

@@ -4,6 +4,7 @@
 #include "glint/math/color.h"
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace glint {
@@ -14,6 +15,9 @@ struct Image {
     int height = 0;
     int channels = 0;
     std::vector<float> pixels;
+    /// One name per channel ("R", "G", "B", "albedo.R", "Z", ...) for the formats that keep
+    /// names (EXR); empty for R, G, B (and A).
+    std::vector<std::string> channel_names;
 
     Image() = default;
     Image(int w, int h, int c) : width(w), height(h), channels(c), pixels(std::size_t(w) * h * c, 0.0f) {}

@@ -44,14 +44,12 @@ inline constexpr int kMaxImageSide = 65536;
 struct WriteOptions {
     /// Exposure in stops applied before display encoding (PNG, JPEG, TIFF 8-bit): value·2^exposure.
     float exposure = 0.0f;
-    /// EXR only: the name of a fourth channel of the image written after R, G, B (such as
-    /// "samples" for the per-pixel sample count of a partial render). Other formats and
-    /// an empty name write R, G, B only.
-    std::string fourth_channel;
 };
 
 /// Write by extension: .exr, .hdr, .pfm keep linear floats; .png, .jpg, .tif, .bmp get
-/// exposure and sRGB encoding in 8 bits. The file is written under a temporary name in the
+/// exposure and sRGB encoding in 8 bits. An EXR keeps every channel of an image whose
+/// channels are named (Image::channel_names: a partial render's "samples", AOVs); the other
+/// formats, and images without names, write R, G, B. The file is written under a temporary name in the
 /// same folder and renamed, so a failure never leaves a partial image. Throws ImageError.
 void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options = {});
 

@@ -4,6 +4,7 @@
 /// image an uninterrupted render gives, bit for bit (every sample is a function of seed,
 /// pixel and sample index, and a tile is saved only when all its samples are in).
 
+#include "glint/image/aov_film.h"
 #include "glint/image/film.h"
 #include "glint/integrators/render_settings.h"
 #include "glint/integrators/tile_grid.h"
@@ -38,14 +39,15 @@ using RenderFingerprint = std::vector<std::pair<std::string, std::string>>;
 
 /// Save the finished tiles of `film` with `fingerprint`, under a temporary name renamed into
 /// place (a checkpoint is whole or absent). Safe while other threads render unfinished
-/// tiles: only finished tiles' pixels are read. Throws CheckpointError.
+/// tiles: only finished tiles' pixels are read. With `aovs` (a render with AOVs), their
+/// accumulators too. Throws CheckpointError.
 void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint& fingerprint, const Film& film,
-                      const TileGrid& tiles);
+                      const TileGrid& tiles, const AovFilm* aovs = nullptr);
 
 /// Restore a checkpoint into an empty `film` and `tiles` of the render whose fingerprint is
 /// `expected`. Throws CheckpointError naming the file and, for another render's
 /// checkpoint, every setting that differs ("spp: the checkpoint has 16, this render 4").
-void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film,
-                     TileGrid& tiles);
+void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint& expected, Film& film, TileGrid& tiles,
+                     AovFilm* aovs = nullptr);
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 #pragma once
 /// \file Integrator base: owns the pixel loop; subclasses compute radiance along a ray.
 
+#include "glint/image/aov_film.h"
 #include "glint/image/film.h"
 #include "glint/integrators/ray_tree.h"
 #include "glint/integrators/render_settings.h"
@@ -43,6 +44,9 @@ struct TraceContext {
     /// for at every bounce (4-7 % for Whitted when they were arguments).
     RayBranch branch = {};
     int32_t node = -1;
+    /// Where the camera ray's first hit goes when AOVs are rendered (null otherwise): the
+    /// integrator fills it at the camera ray's hit and leaves it alone for a miss.
+    FirstHit* first_hit = nullptr;
 };
 
 /// The threads this machine runs at once; more would not render faster.
@@ -62,10 +66,11 @@ public:
     /// set (from a signal handler, say), tiles not yet begun are skipped and the tiles in
     /// flight finish: every pixel of the film then has all its samples or none. With
     /// `tiles`, tiles it marks done are skipped (a resumed render) and each finished tile is
-    /// marked, so that what is finished can be saved (integrators/checkpoint.h).
+    /// marked, so that what is finished can be saved (integrators/checkpoint.h). With
+    /// `aovs`, every sample's first hit and radiance also go there.
     RenderStats render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                        const ProgressCallback& progress = {}, const std::atomic<bool>* stop = nullptr,
-                       TileGrid* tiles = nullptr) const;
+                       TileGrid* tiles = nullptr, AovFilm* aovs = nullptr) const;
 
     /// Pixel (x, y) of the image `render` makes with these settings: every sample as the
     /// render takes it, and the rays of sample `sample` (of every sample when none is

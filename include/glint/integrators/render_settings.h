@@ -3,10 +3,13 @@
 /// seed, threads. One plain description, filled by a scene file and overridden by the
 /// command line; the film and the integrator are made from it.
 
+#include "glint/image/aov.h"
+
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace glint {
 
@@ -67,6 +70,8 @@ struct RenderSettings {
     MisHeuristic mis = MisHeuristic::Power;
     /// 0 = all cores.
     uint32_t threads = 0;
+    /// Outputs written beside the image as extra EXR channels, in this order, each once.
+    std::vector<Aov> aovs;
 };
 
 }  // namespace glint

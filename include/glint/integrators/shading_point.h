@@ -4,12 +4,15 @@
 /// of refraction of the interface from the ray's stack of media.
 
 #include "glint/geometry/hit.h"
+#include "glint/image/aov_film.h"
 #include "glint/integrators/ior_stack.h"
 #include "glint/lights/light.h"
 #include "glint/materials/bsdf.h"
 #include "glint/materials/material.h"
 #include "glint/math/offset_ray.h"
 #include "glint/math/ray.h"
+
+#include <algorithm>
 
 namespace glint {
 
@@ -64,6 +67,18 @@ struct ShadingPoint {
     // A fully transparent material has no diffuse lobe for the texture to tint: skip the lookup.
     if (!m.texture || m.transparency >= 1.0f) return Color(1.0f);
     return m.texture->evaluate(si.uv, si.p);
+}
+
+/// What the AOVs take from the camera ray's hit (image/aov.h): the diffuse albedo
+/// kd·texture·(1 − t), the shading normal towards the camera, the position and the distance
+/// along the camera ray.
+inline void record_first_hit(FirstHit& out, const Ray& camera_ray, const SurfaceInteraction& si, const ShadingPoint& sp,
+                             const Material& m, const Color& texture) {
+    out.hit = true;
+    out.albedo = m.diffuse * texture * (1.0f - std::clamp(m.transparency, 0.0f, 1.0f));
+    out.normal = sp.n;
+    out.position = si.p;
+    out.distance = length(si.p - camera_ray.origin);
 }
 
 /// The shadow ray from `origin`, a surface point already moved off its surface to the side
