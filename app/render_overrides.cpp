@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <stdexcept>
 #include <vector>
@@ -74,6 +75,27 @@ void apply_overrides(const RenderOverrides& opt, RenderSettings& s) {
         s.light_samples = in_range("--light-samples", *opt.light_samples, 1, Limits::kMaxLightSamples);
     if (opt.mis) s.mis = *opt.mis == "balance" ? glint::MisHeuristic::Balance : glint::MisHeuristic::Power;
     if (opt.aov) s.aovs = parse_aov_list(*opt.aov);
+    if (opt.adaptive || opt.adaptive_threshold) {
+        AdaptiveSampling adaptive = s.adaptive.value_or(AdaptiveSampling{});
+        if (opt.adaptive_threshold) {
+            if (!(*opt.adaptive_threshold > 0.0 && std::isfinite(*opt.adaptive_threshold)))
+                throw std::invalid_argument(
+                    fmt::format("--adaptive-threshold: expected a positive relative error (0.01: 1 %); got {}",
+                                *opt.adaptive_threshold));
+            adaptive.threshold = float(*opt.adaptive_threshold);
+        }
+        s.adaptive = adaptive;
+    }
+    // The most samples (the scene's adaptive max_spp, or --spp) must suit the sample order.
+    if (s.adaptive) {
+        const uint32_t spp = s.samples_per_axis * s.samples_per_axis;
+        if (!glint::is_power_of_four(spp))
+            throw std::invalid_argument(
+                fmt::format("--spp: expected a power of 4 (1, 4, 16, 64, ...) with adaptive sampling, the most a pixel "
+                            "takes; got {}",
+                            spp));
+        s.adaptive->min_spp = std::min(s.adaptive->min_spp, spp);
+    }
 }
 
 void add_render_overrides(CLI::App* command, RenderOverrides& o) {
@@ -95,6 +117,10 @@ void add_render_overrides(CLI::App* command, RenderOverrides& o) {
                         "Whitted: samples per area light per shading point (1 to 1024)");
     command->add_option("--mis", o.mis, "Path: multiple importance sampling heuristic")
         ->check(CLI::IsMember({"balance", "power"}));
+    command->add_flag("--adaptive", o.adaptive,
+                      "Adaptive sampling: each pixel stops once its error is small, --spp (a power of 4) at most");
+    command->add_option("--adaptive-threshold", o.adaptive_threshold,
+                        "Relative error at which an adaptive pixel stops (default 0.01; implies --adaptive)");
     command->add_option("--aov", o.aov,
                         "Extra EXR channels, comma-separated: albedo, normal, depth, position, spp, variance");
 }

@@ -119,6 +119,8 @@ check_refused "--focus: expected a positive distance in world units; got 0" --fo
 check_refused "--aov: expected a comma-separated list of albedo, normal, depth, position, spp, variance; got 'zdepth'" \
   --aov albedo,zdepth
 check_refused "refused.png: AOVs (depth) are written as extra channels of an EXR image" --aov depth
+check_refused "--spp: expected a power of 4 (1, 4, 16, 64, ...) with adaptive sampling" --adaptive --spp 9
+check_refused "--adaptive-threshold: expected a positive relative error" --adaptive-threshold -1
 if "$glint" render -o refused.png --spp abc 2>/dev/null; then fail "--spp abc accepted"; else
   [ $? -eq 1 ] || fail "a malformed number does not exit with 1"; fi
 

@@ -39,11 +39,11 @@ TEST(TomlSceneErrors, UnknownSection) {
 }
 
 TEST(TomlSceneErrors, UnknownKeyWithoutCloseMatchListsTheKeys) {
-    expect_error(
-        "[render]\nwidth = 64\ncolour_space = \"srgb\"\n", "test.toml:3:1:",
-        {"unknown key 'colour_space'",
-         "expected one of: aovs, filter, filter_radius, height, integrator, light_samples, max_depth, mis, seed, "
-         "spp, width"});
+    expect_error("[render]\nwidth = 64\ncolour_space = \"srgb\"\n", "test.toml:3:1:",
+                 {"unknown key 'colour_space'",
+                  "expected one of: adaptive, aovs, filter, filter_radius, height, integrator, light_samples, "
+                  "max_depth, mis, seed, "
+                  "spp, width"});
 }
 
 TEST(TomlSceneErrors, UnknownKeyInsideTransform) {
@@ -226,6 +226,22 @@ TEST(TomlScene, AovsInOrderEachOnce) {
         "[render]\naovs = [\"albedo\", \"Z\"]\n", "test.toml:2:19:",
         {"render.aovs[1] is the string \"Z\"", "expected one of albedo, normal, depth, position, spp, variance"});
     expect_error("[render]\naovs = \"albedo\"\n", "test.toml:2:8:", {"render.aovs", "array"});
+}
+
+TEST(TomlScene, AdaptiveSampling) {
+    const LoadedScene loaded = load("[render]\nadaptive = { min_spp = 2, max_spp = 256, threshold = 0.05 }\n");
+    ASSERT_TRUE(loaded.settings.adaptive);
+    EXPECT_EQ(loaded.settings.samples_per_axis, 16u);
+    EXPECT_EQ(loaded.settings.adaptive->min_spp, 2u);
+    EXPECT_FLOAT_EQ(loaded.settings.adaptive->threshold, 0.05f);
+    const LoadedScene defaults = load("[render]\nadaptive = {}\n");
+    EXPECT_EQ(defaults.settings.samples_per_axis, 8u);
+    EXPECT_EQ(defaults.settings.adaptive->min_spp, 4u);
+    EXPECT_FALSE(load("[render]\nspp = 4\n").settings.adaptive);
+    expect_error("[render]\nadaptive = { max_spp = 36 }\n", "test.toml:2:24:", {"a power of 4"});
+    expect_error("[render]\nadaptive = { max_spp = 16, min_spp = 32 }\n", "test.toml:2:38:", {"from 1 to 16"});
+    expect_error("[render]\nadaptive = { threshold = 0 }\n", "test.toml:2:26:", {"positive relative error"});
+    expect_error("[render]\nspp = 16\nadaptive = {}\n", "test.toml:2:7:", {"spp or adaptive.max_spp, not both"});
 }
 
 TEST(TomlSceneErrors, LensKeys) {

@@ -36,6 +36,34 @@ void for_each_tile(uint32_t threads, uint32_t count, const F& render_tile) {
     }
 }
 
+/// Adaptive sampling needs a power-of-4 maximum (its sample order) and a batch within it.
+void check_adaptive(const RenderSettings& settings) {
+    if (!settings.adaptive) return;
+    const uint32_t spp = settings.samples_per_axis * settings.samples_per_axis;
+    if (!is_power_of_four(spp))
+        throw std::invalid_argument("adaptive sampling needs a power of 4 samples per pixel at most (4, 16, 64, ...)");
+    if (settings.adaptive->min_spp == 0 || settings.adaptive->min_spp > spp)
+        throw std::invalid_argument("adaptive sampling: the minimum samples per pixel must be from 1 to the maximum");
+}
+
+std::vector<float> first_batch_means(const std::vector<PixelError>& errors) {
+    std::vector<float> means(errors.size());
+    for (std::size_t i = 0; i < errors.size(); ++i) means[i] = errors[i].mean();
+    return means;
+}
+
+/// The largest contrast between pixel (x, y) of a tile `width` wide and its neighbours in it,
+/// from the tile's first-batch mean luminances (row by row).
+float largest_contrast(const std::vector<float>& means, uint32_t width, uint32_t x, uint32_t y) {
+    const auto height = uint32_t(means.size() / width);
+    const float own = means[std::size_t(y) * width + x];
+    float largest = 0.0f;
+    for (uint32_t ny = y > 0 ? y - 1 : 0; ny <= std::min(y + 1, height - 1); ++ny)
+        for (uint32_t nx = x > 0 ? x - 1 : 0; nx <= std::min(x + 1, width - 1); ++nx)
+            largest = std::max(largest, contrast(own, means[std::size_t(ny) * width + nx]));
+    return largest;
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -69,25 +97,53 @@ PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSetti
     if (sample && *sample >= n * n)
         throw std::out_of_range("sample " + std::to_string(*sample) + " does not exist: a pixel has " +
                                 std::to_string(n * n) + " samples, 0 to " + std::to_string(n * n - 1));
+    check_adaptive(settings);
     const Filter filter(settings.filter, settings.filter_radius);
     Sampler sampler(settings.seed, n);
     PixelExplanation explanation{.x = x, .y = y, .samples = {}, .value = {}};
-    // A film of one pixel accumulates exactly as the render's film does at (x, y).
+    // A film of one pixel accumulates exactly as the render's film does at (x, y), and an
+    // adaptive pixel stops where the render's does.
     Film pixel(1, 1);
-    for (uint32_t index = 0; index < n * n; ++index) {
+    PixelError error;
+    const uint32_t minimum =
+        settings.adaptive ? adaptive_minimum(scene, camera ? *camera : scene.camera(), filter, settings, x, y) : 0;
+    for (uint32_t k = 0; k < n * n; ++k) {
+        if (settings.adaptive && converged(*settings.adaptive, error, minimum)) break;
+        const uint32_t index = settings.adaptive ? progressive_cell(k, n) : k;
         RayTree tree;
-        const bool recorded = !sample || *sample == index;
+        const bool recorded = !sample || *sample == k;
         TraceContext context{.sampler = sampler, .rays = 0, .tree = recorded ? &tree : nullptr};
         ExplainedSample s;
         static_cast<CameraSample&>(s) = take_sample(scene, camera ? *camera : scene.camera(), filter, x, y, index,
                                                     settings.width, settings.height, context);
-        s.index = index;
+        error.add(s.radiance.luminance());
+        s.index = k;
         if (recorded) s.tree = std::move(tree);
         pixel.add_sample(0, 0, s.radiance, s.filter_weight);
         explanation.samples.push_back(std::move(s));
     }
     explanation.value = pixel.at(0, 0);
     return explanation;
+}
+
+uint32_t Integrator::adaptive_minimum(const RenderScene& scene, const Camera& camera, const Filter& filter,
+                                      const RenderSettings& settings, uint32_t x, uint32_t y) const {
+    // The first batches of the pixel's tile, as the render takes them.
+    const uint32_t n = settings.samples_per_axis;
+    const TileGrid grid(settings.width, settings.height);
+    const auto [x0, y0, x1, y1] = grid.bounds(grid.tile_of(x, y));
+    Sampler sampler(settings.seed, n);
+    TraceContext context{sampler};
+    std::vector<PixelError> errors(std::size_t(x1 - x0) * (y1 - y0));
+    for (uint32_t py = y0; py < y1; ++py)
+        for (uint32_t px = x0; px < x1; ++px)
+            for (uint32_t k = 0; k < settings.adaptive->min_spp; ++k)
+                errors[(py - y0) * (x1 - x0) + (px - x0)].add(take_sample(scene, camera, filter, px, py,
+                                                                          progressive_cell(k, n), settings.width,
+                                                                          settings.height, context)
+                                                                  .radiance.luminance());
+    const float edge = largest_contrast(first_batch_means(errors), x1 - x0, x - x0, y - y0);
+    return minimum_samples(*settings.adaptive, edge, n * n);
 }
 
 RayTree Integrator::record_sample(const RenderScene& scene, const RenderSettings& settings, const Camera& camera,
@@ -104,6 +160,7 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
                                const ProgressCallback& progress, const std::atomic<bool>* stop, TileGrid* tiles,
                                AovFilm* aovs) const {
     if (settings.samples_per_axis == 0) throw std::invalid_argument("samples per axis must be at least 1");
+    check_adaptive(settings);
     const Filter filter(settings.filter, settings.filter_radius);
     const auto start = std::chrono::steady_clock::now();
     const uint32_t width = film.width(), height = film.height();
@@ -123,15 +180,39 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
         TraceContext context{sampler};
         FirstHit first_hit;
         if (aovs) context.first_hit = &first_hit;
-        for (uint32_t y = y0; y < y1; ++y)
-            for (uint32_t x = x0; x < x1; ++x)
-                for (uint32_t index = 0; index < n * n; ++index) {
-                    first_hit.hit = false;
-                    const CameraSample sample =
-                        take_sample(scene, scene.camera(), filter, x, y, index, width, height, context);
-                    film.add_sample(x, y, sample.radiance, sample.filter_weight);
-                    if (aovs) aovs->add_sample(x, y, first_hit, sample.radiance);
+        // Sample `index` of pixel (x, y) into the film (and the AOVs); its radiance.
+        auto add_sample = [&](uint32_t x, uint32_t y, uint32_t index) {
+            first_hit.hit = false;
+            const CameraSample sample = take_sample(scene, scene.camera(), filter, x, y, index, width, height, context);
+            film.add_sample(x, y, sample.radiance, sample.filter_weight);
+            if (aovs) aovs->add_sample(x, y, first_hit, sample.radiance);
+            return sample.radiance;
+        };
+        if (!settings.adaptive) {
+            for (uint32_t y = y0; y < y1; ++y)
+                for (uint32_t x = x0; x < x1; ++x)
+                    for (uint32_t index = 0; index < n * n; ++index) (void)add_sample(x, y, index);
+        } else {
+            // Every pixel of the tile takes its first batch; then each continues, knowing its
+            // neighbours' first batches (integrators/adaptive_sampling.h).
+            const AdaptiveSampling& adaptive = *settings.adaptive;
+            const uint32_t tile_width = x1 - x0;
+            std::vector<PixelError> errors(std::size_t(tile_width) * (y1 - y0));
+            for (uint32_t y = y0; y < y1; ++y)
+                for (uint32_t x = x0; x < x1; ++x)
+                    for (uint32_t k = 0; k < adaptive.min_spp; ++k)
+                        errors[(y - y0) * tile_width + (x - x0)].add(
+                            add_sample(x, y, progressive_cell(k, n)).luminance());
+            const std::vector<float> first = first_batch_means(errors);
+            for (uint32_t y = y0; y < y1; ++y)
+                for (uint32_t x = x0; x < x1; ++x) {
+                    PixelError& error = errors[(y - y0) * tile_width + (x - x0)];
+                    const float edge = largest_contrast(first, tile_width, x - x0, y - y0);
+                    const uint32_t minimum = minimum_samples(adaptive, edge, n * n);
+                    for (uint32_t k = adaptive.min_spp; k < n * n && !converged(adaptive, error, minimum); ++k)
+                        error.add(add_sample(x, y, progressive_cell(k, n)).luminance());
                 }
+        }
         rays += context.rays;
         grid.mark_done(tile);
         const uint32_t done = ++finished;

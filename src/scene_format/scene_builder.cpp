@@ -51,6 +51,21 @@ std::vector<Aov> read_aovs(const ParamTable& t) {
     return aovs;
 }
 
+/// `adaptive = { min_spp, max_spp, threshold }` (integrators/adaptive_sampling.h).
+void read_adaptive(const ParamTable& t, RenderSettings& s) {
+    const uint32_t max_spp = count(t, "max_spp", 64, 1, SettingLimits::kMaxSpp);
+    if (!is_power_of_four(max_spp))
+        t.fail("max_spp",
+               "a power of 4 (4, 16, 64, 256, 1024, 4096): adaptive samples are taken in a stratified order");
+    s.samples_per_axis = *samples_per_axis(max_spp);
+    AdaptiveSampling adaptive;
+    adaptive.min_spp = count(t, "min_spp", std::min<int64_t>(4, max_spp), 1, max_spp);
+    adaptive.threshold = t.number("threshold", adaptive.threshold);
+    if (!(adaptive.threshold > 0.0f)) t.fail("threshold", "a positive relative error (0.01: 1 %)");
+    t.reject_unknown_keys();
+    s.adaptive = adaptive;
+}
+
 void read_render(const ParamTable& t, RenderSettings& s) {
     s.width = count(t, "width", s.width, 1, SettingLimits::kMaxImageSide);
     s.height = count(t, "height", s.height, 1, SettingLimits::kMaxImageSide);
@@ -74,6 +89,11 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     s.light_samples = count(t, "light_samples", s.light_samples, 1, SettingLimits::kMaxLightSamples);
     s.mis = t.choice("mis", kMisHeuristics, "power") == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
     s.aovs = read_aovs(t);
+    if (const ParamTable* adaptive = t.table("adaptive")) {
+        if (t.find("spp"))
+            t.fail("spp", "spp or adaptive.max_spp, not both: with adaptive sampling max_spp is the most");
+        read_adaptive(*adaptive, s);
+    }
     t.reject_unknown_keys();
 }
 

@@ -103,6 +103,10 @@ public:
     }
 
 private:
+    /// With adaptive sampling, the samples pixel (x, y) takes at least, from its tile's first
+    /// batches (explain() follows the render's decisions).
+    [[nodiscard]] uint32_t adaptive_minimum(const RenderScene& scene, const Camera& camera, const Filter& filter,
+                                            const RenderSettings& settings, uint32_t x, uint32_t y) const;
     /// Sample `index` of pixel (x, y) of a `width`×`height` image: where it falls, its
     /// filter weight and its radiance. The one place both render and explain take samples.
     CameraSample take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x,

@@ -4,6 +4,7 @@
 /// command line; the film and the integrator are made from it.
 
 #include "glint/image/aov.h"
+#include "glint/integrators/adaptive_sampling.h"
 
 #include <cmath>
 #include <cstdint>
@@ -70,6 +71,9 @@ struct RenderSettings {
     MisHeuristic mis = MisHeuristic::Power;
     /// 0 = all cores.
     uint32_t threads = 0;
+    /// When set, pixels stop taking samples once their error is small enough; the N² above
+    /// is then the most a pixel takes (a power of 4: integrators/adaptive_sampling.h).
+    std::optional<AdaptiveSampling> adaptive;
     /// Outputs written beside the image as extra EXR channels, in this order, each once.
     std::vector<Aov> aovs;
 };

@@ -24,6 +24,8 @@ public:
     [[nodiscard]] uint32_t height() const { return height_; }
     [[nodiscard]] uint32_t count() const { return tiles_x_ * tiles_y_; }
     [[nodiscard]] Bounds bounds(uint32_t tile) const;
+    /// The tile pixel (x, y) belongs to.
+    [[nodiscard]] uint32_t tile_of(uint32_t x, uint32_t y) const { return (y / kTileSize) * tiles_x_ + x / kTileSize; }
     /// Finished: every pixel of the tile has all its samples in the film.
     [[nodiscard]] bool done(uint32_t tile) const { return done_[tile].load(std::memory_order_acquire); }
     void mark_done(uint32_t tile) { done_[tile].store(true, std::memory_order_release); }
