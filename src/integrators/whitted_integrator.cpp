@@ -42,8 +42,12 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
             return;
         }
         const Color c = bsdf.eval(ls.direction) * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
-        if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, false, c);
+        // The tree records what the sum gained, not c: recording c would give its product a
+        // second use, and GCC then no longer fuses it into the sum (FMA) as it does in the
+        // render's instantiation, so explain differed from render in the last bit.
+        [[maybe_unused]] const Color before = sum;
         sum += c;
+        if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, false, sum - before);
     };
     const std::vector<const Light*>& lights = scene.all_lights();
     for (uint32_t i = 0; i < lights.size(); ++i) {
