@@ -68,8 +68,12 @@ Image AovFilm::append_to(const Image& image) const {
     if (image.channel_names.size() != std::size_t(image.channels))
         throw std::invalid_argument("AovFilm::append_to: the image's channels have no names");
     std::vector<std::string> names = image.channel_names;
-    for (const Aov aov : aovs_)
-        for (std::string& name : aov_channels(aov)) names.push_back(std::move(name));
+    std::vector<std::size_t> widths;  // channels per AOV
+    for (const Aov aov : aovs_) {
+        std::vector<std::string> channels = aov_channels(aov);
+        widths.push_back(channels.size());
+        for (std::string& name : channels) names.push_back(std::move(name));
+    }
     Image out(image.width, image.height, int(names.size()));
     out.channel_names = std::move(names);
     for (uint32_t y = 0; y < height_; ++y)
@@ -79,9 +83,9 @@ Image AovFilm::append_to(const Image& image) const {
             float* dst = &out.pixels[pixel * std::size_t(out.channels)];
             std::copy(in, in + image.channels, dst);
             dst += image.channels;
-            for (const Aov aov : aovs_) {
-                aov_values(aov, pixels_[pixel], dst);
-                dst += aov_channels(aov).size();
+            for (std::size_t a = 0; a < aovs_.size(); ++a) {
+                aov_values(aovs_[a], pixels_[pixel], dst);
+                dst += widths[a];
             }
         }
     return out;

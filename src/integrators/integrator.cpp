@@ -46,22 +46,31 @@ void check_adaptive(const RenderSettings& settings) {
         throw std::invalid_argument("adaptive sampling: the minimum samples per pixel must be from 1 to the maximum");
 }
 
-std::vector<float> first_batch_means(const std::vector<PixelError>& errors) {
-    std::vector<float> means(errors.size());
-    for (std::size_t i = 0; i < errors.size(); ++i) means[i] = errors[i].mean();
-    return means;
+/// Every pixel of the tile `b` takes its first batch of `adaptive.min_spp` samples, in the
+/// progressive order of an n×n grid; `luminance(x, y, index)` takes one and returns its
+/// luminance. The statistics per pixel, row by row.
+template <class Sample>
+std::vector<PixelError> first_batches(const TileGrid::Bounds& b, const AdaptiveSampling& adaptive, uint32_t n,
+                                      const Sample& luminance) {
+    std::vector<PixelError> errors(std::size_t(b.x1 - b.x0) * (b.y1 - b.y0));
+    for (uint32_t y = b.y0; y < b.y1; ++y)
+        for (uint32_t x = b.x0; x < b.x1; ++x)
+            for (uint32_t k = 0; k < adaptive.min_spp; ++k)
+                errors[(y - b.y0) * (b.x1 - b.x0) + (x - b.x0)].add(luminance(x, y, progressive_cell(k, n)));
+    return errors;
 }
 
-/// The largest contrast between pixel (x, y) of a tile `width` wide and its neighbours in it,
-/// from the tile's first-batch mean luminances (row by row).
-float largest_contrast(const std::vector<float>& means, uint32_t width, uint32_t x, uint32_t y) {
-    const auto height = uint32_t(means.size() / width);
-    const float own = means[std::size_t(y) * width + x];
+/// The samples pixel (x, y) of tile `b` takes at least: from the largest contrast between its
+/// first-batch mean luminance and its neighbours' in the tile (`errors` from first_batches).
+uint32_t tile_minimum_samples(const TileGrid::Bounds& b, const std::vector<PixelError>& errors,
+                              const AdaptiveSampling& adaptive, uint32_t spp, uint32_t x, uint32_t y) {
+    const uint32_t width = b.x1 - b.x0;
+    const float own = errors[(y - b.y0) * width + (x - b.x0)].mean();
     float largest = 0.0f;
-    for (uint32_t ny = y > 0 ? y - 1 : 0; ny <= std::min(y + 1, height - 1); ++ny)
-        for (uint32_t nx = x > 0 ? x - 1 : 0; nx <= std::min(x + 1, width - 1); ++nx)
-            largest = std::max(largest, contrast(own, means[std::size_t(ny) * width + nx]));
-    return largest;
+    for (uint32_t ny = std::max(y, b.y0 + 1) - 1; ny <= std::min(y + 1, b.y1 - 1); ++ny)
+        for (uint32_t nx = std::max(x, b.x0 + 1) - 1; nx <= std::min(x + 1, b.x1 - 1); ++nx)
+            largest = std::max(largest, contrast(own, errors[(ny - b.y0) * width + (nx - b.x0)].mean()));
+    return minimum_samples(adaptive, largest, spp);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -131,19 +140,15 @@ uint32_t Integrator::adaptive_minimum(const RenderScene& scene, const Camera& ca
     // The first batches of the pixel's tile, as the render takes them.
     const uint32_t n = settings.samples_per_axis;
     const TileGrid grid(settings.width, settings.height);
-    const auto [x0, y0, x1, y1] = grid.bounds(grid.tile_of(x, y));
+    const TileGrid::Bounds b = grid.bounds(grid.tile_of(x, y));
     Sampler sampler(settings.seed, n);
     TraceContext context{sampler};
-    std::vector<PixelError> errors(std::size_t(x1 - x0) * (y1 - y0));
-    for (uint32_t py = y0; py < y1; ++py)
-        for (uint32_t px = x0; px < x1; ++px)
-            for (uint32_t k = 0; k < settings.adaptive->min_spp; ++k)
-                errors[(py - y0) * (x1 - x0) + (px - x0)].add(take_sample(scene, camera, filter, px, py,
-                                                                          progressive_cell(k, n), settings.width,
-                                                                          settings.height, context)
-                                                                  .radiance.luminance());
-    const float edge = largest_contrast(first_batch_means(errors), x1 - x0, x - x0, y - y0);
-    return minimum_samples(*settings.adaptive, edge, n * n);
+    const std::vector<PixelError> errors =
+        first_batches(b, *settings.adaptive, n, [&](uint32_t px, uint32_t py, uint32_t index) {
+            return take_sample(scene, camera, filter, px, py, index, settings.width, settings.height, context)
+                .radiance.luminance();
+        });
+    return tile_minimum_samples(b, errors, *settings.adaptive, n * n, x, y);
 }
 
 RayTree Integrator::record_sample(const RenderScene& scene, const RenderSettings& settings, const Camera& camera,
@@ -196,19 +201,20 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
             // Every pixel of the tile takes its first batch; then each continues, knowing its
             // neighbours' first batches (integrators/adaptive_sampling.h).
             const AdaptiveSampling& adaptive = *settings.adaptive;
-            const uint32_t tile_width = x1 - x0;
-            std::vector<PixelError> errors(std::size_t(tile_width) * (y1 - y0));
+            const TileGrid::Bounds b = grid.bounds(tile);
+            std::vector<PixelError> errors = first_batches(b, adaptive, n, [&](uint32_t x, uint32_t y, uint32_t index) {
+                return add_sample(x, y, index).luminance();
+            });
+            // The minimums come from the first batches, before any pixel adds to its statistics.
+            std::vector<uint32_t> minimums(errors.size());
             for (uint32_t y = y0; y < y1; ++y)
                 for (uint32_t x = x0; x < x1; ++x)
-                    for (uint32_t k = 0; k < adaptive.min_spp; ++k)
-                        errors[(y - y0) * tile_width + (x - x0)].add(
-                            add_sample(x, y, progressive_cell(k, n)).luminance());
-            const std::vector<float> first = first_batch_means(errors);
+                    minimums[(y - y0) * (x1 - x0) + (x - x0)] = tile_minimum_samples(b, errors, adaptive, n * n, x, y);
             for (uint32_t y = y0; y < y1; ++y)
                 for (uint32_t x = x0; x < x1; ++x) {
-                    PixelError& error = errors[(y - y0) * tile_width + (x - x0)];
-                    const float edge = largest_contrast(first, tile_width, x - x0, y - y0);
-                    const uint32_t minimum = minimum_samples(adaptive, edge, n * n);
+                    const std::size_t i = (y - y0) * (x1 - x0) + (x - x0);
+                    PixelError& error = errors[i];
+                    const uint32_t minimum = minimums[i];
                     for (uint32_t k = adaptive.min_spp; k < n * n && !converged(adaptive, error, minimum); ++k)
                         error.add(add_sample(x, y, progressive_cell(k, n)).luminance());
                 }

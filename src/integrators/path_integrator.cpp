@@ -72,8 +72,8 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         const Material& m = blended ? *blended : scene.material(si.materials[0]);
         const ShadingPoint sp = shading_point(si, m, ray, media);
         if (context.tree) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], sp.n);
-        const Color texture = diffuse_texture(m, si);
-        if (depth == 0 && context.first_hit) record_first_hit(*context.first_hit, camera_ray, si, sp, m, texture);
+        if (depth == 0 && context.first_hit)
+            record_first_hit(*context.first_hit, camera_ray, si, sp, m, diffuse_texture(m, si));
 
         const Color le = scene.emitted(hit.object, m, si, sp.wo);
         if (!le.is_black()) {
@@ -86,7 +86,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         }
         if (depth >= max_depth_) break;
 
-        const Bsdf bsdf(m, texture, sp.n, sp.ng, sp.wo, sp.media);
+        const Bsdf bsdf(m, diffuse_texture(m, si), sp.n, sp.ng, sp.wo, sp.media);
 
         // Next-event estimation: one light, chosen uniformly.
         const float u_light = sampler.next_1d();
