@@ -99,13 +99,15 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
                 const Color f = bsdf.eval(ls.direction);
                 if (!f.is_black()) {
                     ++context.rays;
-                    const Ray shadow = shadow_ray(si.p, sp.ng, ls);
+                    // Light under the surface (a rough dielectric's transmission) is sampled
+                    // from that side.
+                    const Ray shadow = shadow_ray(si.p, dot(ls.direction, sp.ng) < 0.0f ? -sp.ng : sp.ng, ls);
                     const bool blocked = scene.occluded(shadow, DielectricShadows::Opaque);
                     Color direct;
                     if (!blocked) {
                         const float pdf = light_choice_pdf * ls.pdf;
                         const float weight = ls.is_delta ? 1.0f : mis_weight(pdf, bsdf.pdf(ls.direction));
-                        const float scale = dot(sp.n, ls.direction) * weight / pdf;
+                        const float scale = std::abs(dot(sp.n, ls.direction)) * weight / pdf;
                         radiance += throughput * f * ls.radiance * scale;
                         if (context.tree) direct = f * ls.radiance * scale;
                     }

@@ -12,9 +12,10 @@ namespace glint {
 /// BSDF sample that continues the path; emission reached by a BSDF sample is weighted
 /// against the light sample that could have found it by the balance or power heuristic.
 /// Delta lobes (mirror, smooth glass) continue the path with full weight, and emission they
-/// reach counts in full. Russian roulette ends paths after three bounces with probability
-/// 1 − max(throughput), never above 0.95. Dielectrics block light like any surface (no
-/// shadow-ray shortcut), and the Whitted-only ambient term is ignored.
+/// reach counts in full; glossy lobes (rough metal and glass) are smooth lobes like Lambert's,
+/// lit by light samples from either side of the surface. Russian roulette ends paths after three bounces with
+/// probability 1 − max(throughput), never above 0.95. Dielectrics block light like any surface (no shadow-ray
+/// shortcut), and the Whitted-only ambient term is ignored.
 class PathIntegrator final : public Integrator {
 public:
     explicit PathIntegrator(uint32_t max_depth = 5, MisHeuristic heuristic = MisHeuristic::Power)

@@ -2,7 +2,8 @@
 /// \file The Whitted material: one parameter set that covers both assignments' models.
 ///
 /// Shading (docs/shading.md has the full derivation):
-///   L = Le + (1 - t)·[ tex·(ka·La + Σ_i v_i·kd·E_i·max(N·L_i, 0)) + Σ_i v_i·ks·(N·H_i)^s·E_i·max(N·L_i, 0) + kr·L_reflect ]
+///   L = Le + (1 - t)·[ tex·(ka·La + Σ_i v_i·kd·E_i·max(N·L_i, 0))
+///                      + Σ_i v_i·ks·(N·H_i)^s·E_i·max(N·L_i, 0) + kr·L_reflect ]
 ///          + t·[ F·L_reflect + (1 - F)·L_refract ]
 /// t = transparency, F = Schlick's Fresnel term for the interface, v_i = visibility of light i.
 /// The handout's opaque material is t = 0 with kr = its "specular" colour; its dielectric
@@ -45,7 +46,9 @@ struct Material {
     /// Cut-out mask: hits where texture alpha < alpha_cutoff are skipped, shadow rays too.
     const Texture* alpha_texture = nullptr;
     float alpha_cutoff = 0.5f;
-    /// Microfacet roughness, recorded from assets for the glossy reflection to come.
+    /// Microfacet roughness in [0, 1]. 0: the mirror and the dielectric are Dirac deltas (exact
+    /// reflection and refraction). Above 0 they become GGX lobes of alpha = roughness²
+    /// (glossy metal, frosted glass; materials/microfacet.h).
     float roughness = 0.0f;
 
     [[nodiscard]] bool is_dielectric() const { return transparency > 0.0f; }
