@@ -34,7 +34,8 @@ std::string rgb(const Color& c) {
 std::string xyz(const Vec3& v) { return fmt::format("({:.3g}, {:.3g}, {:.3g})", v.x, v.y, v.z); }
 
 /// What a ray's weight is multiplied by relative to its parent's: the Fresnel reflectance
-/// or transmittance of a Whitted child, the BSDF weight of a path bounce.
+/// or transmittance of a Whitted child, f·|cos|/pdf/N of one of N glossy samples, the BSDF
+/// weight of a path bounce.
 Color factor(const RayTree& tree, const RayTreeNode& node) {
     if (node.parent < 0) return node.weight;
     const Color& parent = tree.nodes()[std::size_t(node.parent)].weight;

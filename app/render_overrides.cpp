@@ -73,6 +73,8 @@ void apply_overrides(const RenderOverrides& opt, RenderSettings& s) {
     if (opt.integrator) s.integrator = *opt.integrator;
     if (opt.light_samples)
         s.light_samples = in_range("--light-samples", *opt.light_samples, 1, Limits::kMaxLightSamples);
+    if (opt.glossy_samples)
+        s.glossy_samples = in_range("--glossy-samples", *opt.glossy_samples, 1, Limits::kMaxGlossySamples);
     if (opt.mis) s.mis = *opt.mis == "balance" ? glint::MisHeuristic::Balance : glint::MisHeuristic::Power;
     if (opt.aov) s.aovs = parse_aov_list(*opt.aov);
     if (opt.adaptive || opt.adaptive_threshold) {
@@ -115,6 +117,8 @@ void add_render_overrides(CLI::App* command, RenderOverrides& o) {
         ->check(CLI::IsMember(integrator_names));
     command->add_option("--light-samples", o.light_samples,
                         "Whitted: samples per area light per shading point (1 to 1024)");
+    command->add_option("--glossy-samples", o.glossy_samples,
+                        "Whitted: samples of a rough surface's glossy reflection and refraction (1 to 1024)");
     command->add_option("--mis", o.mis, "Path: multiple importance sampling heuristic")
         ->check(CLI::IsMember({"balance", "power"}));
     command->add_flag("--adaptive", o.adaptive,

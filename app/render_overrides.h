@@ -18,14 +18,15 @@ namespace glint::app {
 struct RenderOverrides {
     // Numbers are read signed and wide, then checked against the limits scene files have,
     // so that "-4" or "100000" gets a message in words rather than a conversion error.
-    std::optional<int64_t> width, height, spp, depth, threads, seed, light_samples;
+    std::optional<int64_t> width, height, spp, depth, threads, seed, light_samples, glossy_samples;
     std::optional<std::string> filter, integrator, mis, aov;
     std::optional<double> filter_radius, adaptive_threshold;
     bool adaptive = false;
 };
 
 /// Add --width, --height, --spp, --depth, --threads, --seed, --filter, --filter-radius,
-/// --integrator, --light-samples, --mis, --aov, --adaptive and --adaptive-threshold to `command`.
+/// --integrator, --light-samples, --glossy-samples, --mis, --aov, --adaptive and
+/// --adaptive-threshold to `command`.
 void add_render_overrides(CLI::App* command, RenderOverrides& overrides);
 
 /// Apply the overrides given to `settings`. Throws std::invalid_argument "--spp: expected

@@ -112,6 +112,7 @@ check_refused "--height: expected an integer from 1 to 16384; got 0" --height 0
 check_refused "--seed: expected a non-negative integer; got -3" --seed -3
 check_refused "--depth: expected an integer from 0 to 64; got 5000" --depth 5000
 check_refused "--light-samples: expected an integer from 1 to 1024" --light-samples 0
+check_refused "--glossy-samples: expected an integer from 1 to 1024; got 0" --glossy-samples 0
 check_refused "--filter-radius: expected a radius in pixels above 0 and at most 16" --filter-radius 0
 check_refused "--threads: expected 0 (all cores) or a thread count up to 1024" --threads -1
 check_refused "--aperture: expected a lens radius ≥ 0 in world units (0: a pinhole); got -0.5" --aperture -0.5

@@ -111,6 +111,64 @@ TEST(Explain, PathValueIsTheRenderedPixelAndTheRaysAddUp) {
     EXPECT_GT(kinds.count("shadow") ? kinds.at("shadow") : 0, 0);
 }
 
+TEST(Explain, WhittedGlossyValueIsTheRenderedPixelAndTheRaysAddUp) {
+    // Rough gold and frosted glass under an area light: glossy samples, MIS-weighted light
+    // samples and emission, refracted samples inside the glass.
+    // Beside the test's folder, which check_against_render empties.
+    const fs::path scene = glint_test::temp_dir().string() + "_glossy.toml";
+    glint_test::write_file(scene, R"([render]
+glossy_samples = 3
+light_samples = 2
+[camera]
+position = [0, 1.2, 4]
+look_at = [0, 0.4, 0]
+fov = 40
+[background]
+color = [0.2, 0.3, 0.4]
+[world]
+ambient_light = 0.1
+[[materials]]
+name = "floor"
+diffuse = 0.6
+[[materials]]
+name = "gold"
+diffuse = 0
+reflectivity = [1.0, 0.78, 0.34]
+fresnel_mirror = true
+roughness = 0.3
+[[materials]]
+name = "frosted"
+diffuse = 0
+transparency = 1
+roughness = 0.4
+[[lights]]
+type = "quad"
+corner = [-0.5, 2.5, -0.5]
+edge_u = [1, 0, 0]
+edge_v = [0, 0, 1]
+radiance = 8
+[[objects]]
+type = "plane"
+size = 10
+material = "floor"
+[[objects]]
+type = "sphere"
+center = [-0.6, 0.5, 0]
+radius = 0.5
+material = "gold"
+[[objects]]
+type = "sphere"
+center = [0.6, 0.5, 0.2]
+radius = 0.5
+material = "frosted"
+)");
+    const auto kinds = check_against_render(scene, "--width 64 --height 48 --spp 4 --filter tent");
+    EXPECT_GT(kinds.count("glossy reflection") ? kinds.at("glossy reflection") : 0, 0);
+    EXPECT_GT(kinds.count("glossy transmission") ? kinds.at("glossy transmission") : 0, 0);
+    EXPECT_GT(kinds.count("shadow") ? kinds.at("shadow") : 0, 0);
+    fs::remove(scene);
+}
+
 TEST(Explain, MirrorSphereUnderAPointLightGivesTheFormulasTree) {
     const fs::path dir = glint_test::temp_dir();
     // Half mirror, half Lambert, lit by a point light beside the camera: the camera ray hits

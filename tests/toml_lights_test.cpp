@@ -37,7 +37,8 @@ TEST(TomlAreaLights, SphereQuadAndDiskBecomeLightsAndObjects) {
 
 TEST(TomlAreaLights, EmissiveObjectsAreLightsUnlessTheWorldSaysNo) {
     const std::string scene =
-        "[[materials]]\nname = \"lamp\"\nemission = 2\n[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"lamp\"\n";
+        "[[materials]]\nname = \"lamp\"\nemission = 2\n[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = "
+        "\"lamp\"\n";
     LoadedScene lit = load(scene);
     const RenderScene prepared(std::move(lit.scene));
     EXPECT_EQ(prepared.area_lights().size(), 1u);
@@ -48,40 +49,54 @@ TEST(TomlAreaLights, EmissiveObjectsAreLightsUnlessTheWorldSaysNo) {
 }
 
 TEST(TomlAreaLights, Mistakes) {
-    expect_error(std::string(kLight) + "type = \"sphere\"\nradius = 0\n", "test.toml:3:10:",
-                 {"lights[0].radius", "expected a positive radius"});
-    expect_error(std::string(kLight) + "type = \"disk\"\nradius = -1\n", "test.toml:3:10:",
-                 {"expected a positive radius"});
+    expect_error(std::string(kLight) + "type = \"sphere\"\nradius = 0\n",
+                 "test.toml:3:10:", {"lights[0].radius", "expected a positive radius"});
+    expect_error(std::string(kLight) + "type = \"disk\"\nradius = -1\n",
+                 "test.toml:3:10:", {"expected a positive radius"});
     expect_error(std::string(kLight) + "type = \"quad\"\ncorner = [0, 0, 0]\nedge_u = [1, 0, 0]\nedge_v = [2, 0, 0]\n",
                  "test.toml:5:10:", {"edge_v", "positive area"});
-    expect_error(std::string(kLight) + "type = \"sphere\"\nradius = 1\nradiance = 0\n", "test.toml:4:12:",
-                 {"lights[0].radiance", "emits nothing"});
+    expect_error(std::string(kLight) + "type = \"sphere\"\nradius = 1\nradiance = 0\n",
+                 "test.toml:4:12:", {"lights[0].radiance", "emits nothing"});
     expect_error(std::string(kLight) + "type = \"point\"\nposition = [0, 1, 0]\nintensity = [0, 0, 0]\n",
                  "test.toml:4:13:", {"lights[0].intensity", "emits nothing"});
-    expect_error(std::string(kLight) + "type = \"sphere\"\nradius = 1\nmaterial = \"lamp\"\n", "test.toml:4:1:",
-                 {"unknown key 'material'"});
-    expect_error("[[materials]]\nname = \"lamp\"\nemission = 2\n[[objects]]\ntype = \"sphere\"\nradius = 1\n"
-                 "material = \"lmap\"\n",
-                 "test.toml:7:12:", {"objects[0].material", "did you mean 'lamp'?"});
+    expect_error(std::string(kLight) + "type = \"sphere\"\nradius = 1\nmaterial = \"lamp\"\n",
+                 "test.toml:4:1:", {"unknown key 'material'"});
+    expect_error(
+        "[[materials]]\nname = \"lamp\"\nemission = 2\n[[objects]]\ntype = \"sphere\"\nradius = 1\n"
+        "material = \"lmap\"\n",
+        "test.toml:7:12:", {"objects[0].material", "did you mean 'lamp'?"});
 }
 
 TEST(TomlRender, IntegratorFilterAndLightSamples) {
     const LoadedScene s = load(
-        "[render]\nintegrator = \"path\"\nfilter = \"mitchell\"\nfilter_radius = 1.5\nlight_samples = 9\nmis = \"balance\"\n");
+        "[render]\nintegrator = \"path\"\nfilter = \"mitchell\"\nfilter_radius = 1.5\nlight_samples = 9\nmis = "
+        "\"balance\"\n");
     EXPECT_EQ(s.settings.integrator, "path");
     EXPECT_EQ(s.settings.filter, PixelFilter::Mitchell);
     EXPECT_EQ(s.settings.filter_radius, 1.5f);
     EXPECT_EQ(s.settings.light_samples, 9u);
     EXPECT_EQ(s.settings.mis, MisHeuristic::Balance);
-    expect_error("[render]\nintegrator = \"pathtracer\"\n", "test.toml:2:14:", {"render.integrator", "whitted", "path"});
+    expect_error("[render]\nintegrator = \"pathtracer\"\n",
+                 "test.toml:2:14:", {"render.integrator", "whitted", "path"});
     expect_error("[render]\nfilter = \"lanczos\"\n", "test.toml:2:10:", {"render.filter", "gaussian", "mitchell"});
     expect_error("[render]\nfilter_radius = 0\n", "test.toml:2:17:", {"render.filter_radius"});
     expect_error("[render]\nlight_samples = 0\n", "test.toml:2:17:", {"render.light_samples", "from 1 to 1024"});
 }
 
+TEST(TomlRender, GlossySamplesAndRoughness) {
+    EXPECT_EQ(load("").settings.glossy_samples, 4u);
+    EXPECT_EQ(load("[render]\nglossy_samples = 16\n").settings.glossy_samples, 16u);
+    expect_error("[render]\nglossy_samples = 0\n", "test.toml:2:18:", {"render.glossy_samples", "from 1 to 1024"});
+    expect_error("[render]\nglossy_samples = 1025\n", "test.toml:2:18:", {"render.glossy_samples", "from 1 to 1024"});
+    for (const char* bad : {"1.5", "-0.1"})
+        expect_error(std::string("[[materials]]\nname = \"m\"\nroughness = ") + bad + "\n",
+                     "test.toml:3:13:", {"materials[0].roughness", "a roughness from 0 to 1"});
+}
+
 /// A water quad (index 1.33) over a checker floor under a point light, seen from above.
 std::string water_scene(bool normal_up) {
-    const std::string edges = normal_up ? "edge_u = [4, 0, 0]\nedge_v = [0, 0, -4]\n" : "edge_u = [0, 0, -4]\nedge_v = [4, 0, 0]\n";
+    const std::string edges =
+        normal_up ? "edge_u = [4, 0, 0]\nedge_v = [0, 0, -4]\n" : "edge_u = [0, 0, -4]\nedge_v = [4, 0, 0]\n";
     return "[camera]\nposition = [0, 3, 3]\nlook_at = [0, 0, 0]\nfov = 40\n"
            "[background]\ncolor = [0.5, 0.7, 1.0]\n"
            "[[textures]]\nname = \"tiles\"\ntype = \"checker\"\nscale = 4\n"

@@ -38,6 +38,11 @@ ImU32 ray_colour(const RayTreeNode& node) {
             return node.blocked ? IM_COL32(255, 70, 70, 255) : IM_COL32(255, 230, 80, 255);
         case RayKind::Bounce:
             return IM_COL32(255, 160, 60, 255);
+        // The glossy kinds in paler tints of the mirror's and the refraction's colours.
+        case RayKind::GlossyReflection:
+            return IM_COL32(170, 225, 255, 255);
+        case RayKind::GlossyTransmission:
+            return IM_COL32(190, 255, 170, 255);
     }
     return IM_COL32(255, 255, 255, 255);
 }

@@ -58,6 +58,7 @@ RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, co
     f.emplace_back("filter", std::string(filter_name(s.filter)));
     f.emplace_back("filter_radius", fmt::format("{}", s.filter_radius));
     f.emplace_back("light_samples", std::to_string(s.light_samples));
+    f.emplace_back("glossy_samples", std::to_string(s.glossy_samples));
     f.emplace_back("mis", s.mis == MisHeuristic::Balance ? "balance" : "power");
     if (s.adaptive)
         f.emplace_back("adaptive", fmt::format("min_spp {}, threshold {}", s.adaptive->min_spp, s.adaptive->threshold));

@@ -14,6 +14,10 @@ std::string_view ray_kind_name(RayKind kind) {
             return "shadow";
         case RayKind::Bounce:
             return "bounce";
+        case RayKind::GlossyReflection:
+            return "glossy reflection";
+        case RayKind::GlossyTransmission:
+            return "glossy transmission";
     }
     return "ray";
 }

@@ -1,6 +1,7 @@
 #include "glint/integrators/whitted_integrator.h"
 
 #include "glint/integrators/shading_point.h"
+#include "glint/lights/area_light.h"
 #include "glint/math/offset_ray.h"
 #include "glint/scene/render_scene.h"
 
@@ -10,25 +11,59 @@
 
 namespace glint {
 
+namespace {
+
+/// `count` points of the sampler's next dimension, stratified among themselves; in `small`
+/// when they fit, so that the usual counts allocate nothing.
+std::span<Vec2> stratified_set(Sampler& sampler, uint32_t count, std::array<Vec2, 16>& small,
+                               std::vector<Vec2>& large) {
+    std::span<Vec2> us(small.data(), count);
+    if (count > small.size()) {
+        large.resize(count);
+        us = large;
+    }
+    sampler.next_2d_set(us);
+    return us;
+}
+
+/// Veach's power heuristic (β = 2) for a strategy against another, each given as its sample
+/// count times its density (Veach 1997, eq. 9.13); written as a ratio so that an infinite
+/// or huge density (a near-delta lobe, a distant small light) cannot overflow.
+float power_heuristic(float n_pdf, float other_n_pdf) {
+    if (!(n_pdf > 0.0f)) return 0.0f;
+    const float r = other_n_pdf / n_pdf;
+    return 1.0f / (1.0f + r * r);
+}
+
+}  // namespace
+
 std::unique_ptr<Integrator> WhittedIntegrator::create(const RenderSettings& settings) {
-    return std::make_unique<WhittedIntegrator>(settings.max_depth, settings.light_samples);
+    return std::make_unique<WhittedIntegrator>(settings.max_depth, settings.light_samples, settings.glossy_samples);
 }
 
 Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const {
-    const IorStack media(scene.ambient_ior());
-    return context.tree ? trace_ray<true>(scene, ray, 0, media, context)
-                        : trace_ray<false>(scene, ray, 0, media, context);
+    return trace(scene, ray, 0, IorStack(scene.ambient_ior()), context);
 }
 
 Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
                                TraceContext& context) const {
+    context.glossy_origin.pdf = 0.0f;  // not a glossy sample's ray
     return context.tree ? trace_ray<true>(scene, ray, depth, media, context)
                         : trace_ray<false>(scene, ray, depth, media, context);
 }
 
+Color WhittedIntegrator::glossy_emission_weight(const RenderScene& scene, uint32_t object, const SurfaceInteraction& si,
+                                                const TraceContext& context, const Color& emission) const {
+    const GlossyOrigin& origin = context.glossy_origin;
+    const AreaLight* light = scene.area_light_of(object);
+    if (!(origin.pdf > 0.0f) || !light) return emission;
+    const float light_pdf = light->pdf(origin.point, si.p, si.geometric_normal);
+    return emission * power_heuristic(float(origin.samples) * origin.pdf, float(light_samples_) * light_pdf);
+}
+
 template <bool Record>
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
-                                      const Vec3& ng, TraceContext& context) const {
+                                      const Vec3& ng, uint32_t glossy_count, TraceContext& context) const {
     const int32_t node = context.node;
     const Vec3 origin = offset_ray_origin(si.p, ng);
     Color sum;
@@ -36,12 +71,25 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         if (!(ls.pdf > 0.0f) || ls.radiance.is_black()) return;
         if (!bsdf.may_reflect(ls.direction)) return;  // behind the surface, or a glass with no smooth lobe
         ++context.rays;
-        const Ray shadow = shadow_ray(origin, ls);
-        if (scene.occluded(shadow)) {
+        // Light from under the surface reaches only a rough dielectric's transmission, and it
+        // comes through the material's own volume: the shadow ray starts on that side and glass
+        // blocks it whatever dielectric_shadows says (the glossy samples bring the light that
+        // finds its way through the glass; docs/shading.md).
+        const bool through = dot(ls.direction, ng) < 0.0f;
+        const Ray shadow = shadow_ray(through ? offset_ray_origin(si.p, -ng) : origin, ls);
+        if (through ? scene.occluded(shadow, DielectricShadows::Opaque) : scene.occluded(shadow)) {
             if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, true, Color());
             return;
         }
-        const Color c = bsdf.eval(ls.direction) * ls.radiance * (dot(bsdf.normal(), ls.direction) * weight / ls.pdf);
+        Color f = bsdf.eval(ls.direction);
+        if (glossy_count > 0 && !ls.is_delta) {
+            // The glossy samples traced from here can find this light too: the glossy part of f
+            // takes the light sample's MIS weight, their emission the rest.
+            const float w =
+                power_heuristic(float(light_samples_) * ls.pdf, float(glossy_count) * bsdf.glossy_pdf(ls.direction));
+            f = f - bsdf.eval_glossy(ls.direction) * (1.0f - w);
+        }
+        const Color c = f * ls.radiance * (std::abs(dot(bsdf.normal(), ls.direction)) * weight / ls.pdf);
         // The tree records what the sum gained, not c: recording c would give its product a
         // second use, and GCC then no longer fuses it into the sum (FMA) as it does in the
         // render's instantiation, so explain differed from render in the last bit.
@@ -59,14 +107,44 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         // N stratified samples of this light: the estimate (1/N) Σ f·L·cosθ/pdf.
         std::array<Vec2, 16> small;
         std::vector<Vec2> large;
-        std::span<Vec2> us(small.data(), light_samples_);
-        if (light_samples_ > small.size()) {
-            large.resize(light_samples_);
-            us = large;
-        }
-        context.sampler.next_2d_set(us);
-        for (const Vec2& u : us) add(light->sample(si.p, u), 1.0f / float(light_samples_), i);
+        for (const Vec2& u : stratified_set(context.sampler, light_samples_, small, large))
+            add(light->sample(si.p, u), 1.0f / float(light_samples_), i);
     }
+    return sum;
+}
+
+template <bool Record>
+Color WhittedIntegrator::glossy(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
+                                const ShadingPoint& sp, float ior, uint32_t count, uint32_t depth,
+                                const IorStack& media, TraceContext& context) const {
+    const int32_t node = Record ? context.node : -1;
+    // The direction from one stratified set, the lobe (conductor or dielectric, reflection or
+    // refraction) from the first coordinate of another, as for area-light samples.
+    std::array<Vec2, 16> small_u, small_lobe;
+    std::vector<Vec2> large_u, large_lobe;
+    const std::span<Vec2> us = stratified_set(context.sampler, count, small_u, large_u);
+    const std::span<Vec2> lobes = stratified_set(context.sampler, count, small_lobe, large_lobe);
+    Color weight(1.0f);
+    if constexpr (Record) weight = context.tree->nodes()[std::size_t(node)].weight;
+    const bool was_below = context.below_glossy;
+    context.below_glossy = true;
+    const float share = 1.0f / float(count);
+    Color sum;
+    for (uint32_t i = 0; i < count; ++i) {
+        const std::optional<BsdfSample> s = bsdf.sample_glossy(lobes[i].x, us[i]);
+        if (!s) continue;
+        const Color w = s->weight * share;
+        const bool transmitted = (s->flags & kBsdfTransmission) != 0;
+        // A refracted sample enters or leaves the material's medium, as the delta refraction does.
+        const IorStack beyond =
+            transmitted ? (sp.entering ? media.entered(sp.medium, ior) : media.left(sp.medium)) : media;
+        const Ray sampled(offset_ray_origin(si.p, transmitted ? -sp.ng : sp.ng), s->wi);
+        context.glossy_origin = {si.p, s->pdf, count};
+        if constexpr (Record)
+            context.branch = {transmitted ? RayKind::GlossyTransmission : RayKind::GlossyReflection, node, weight * w};
+        sum += w * trace_ray<Record>(scene, sampled, depth + 1, beyond, context);
+    }
+    context.below_glossy = was_below;
     return sum;
 }
 
@@ -108,15 +186,23 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     if (depth == 0 && context.first_hit) record_first_hit(*context.first_hit, ray, si, sp, m, texture);
 
     Color radiance = scene.emitted(object, m, si, sp.wo);
+    // Emission that a glossy sample found on an area light shares the light's samples' MIS.
+    if (context.glossy_origin.pdf > 0.0f && !radiance.is_black())
+        radiance = glossy_emission_weight(scene, object, si, context, radiance);
     const float t = std::clamp(m.transparency, 0.0f, 1.0f);
     if (t < 1.0f) {
         // Whitted's ambient term: ka·La, textured like the diffuse term; no BSDF lobe.
         radiance += texture * m.ambient * scene.ambient_light() * (1.0f - t);
         if constexpr (Record) context.tree->add_radiance(node, radiance);
-        radiance += direct_light<Record>(scene, bsdf, si, sp.ng, context);
     } else if constexpr (Record) {
         context.tree->add_radiance(node, radiance);
     }
+    // Glossy samples to trace from here: glossy_samples at the first rough surface, one below it.
+    const uint32_t glossy_count =
+        bsdf.has_glossy_lobes() && depth < max_depth_ ? (context.below_glossy ? 1 : glossy_samples_) : 0;
+    // A clear dielectric (t = 1) takes no direct light (handout §6.2); a rough one's glossy lobes do.
+    if (t < 1.0f || bsdf.has_glossy_lobes())
+        radiance += direct_light<Record>(scene, bsdf, si, sp.ng, glossy_count, context);
     if (depth >= max_depth_) return radiance;
 
     // The throughput from the camera to the children, for the tree only.
@@ -127,13 +213,19 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     if (!specular.reflection.is_black() && dot(specular.reflected, sp.ng) > 0.0f) {
         const Ray reflected(offset_ray_origin(si.p, sp.ng), specular.reflected);
         if constexpr (Record) context.branch = {RayKind::Reflection, node, weight * specular.reflection};
+        context.glossy_origin.pdf = 0.0f;
         radiance += specular.reflection * trace_ray<Record>(scene, reflected, depth + 1, media, context);
     }
     if (specular.transmission > 0.0f && specular.refracted) {
         const IorStack inside = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
         const Ray transmitted(offset_ray_origin(si.p, -sp.ng), *specular.refracted);
         if constexpr (Record) context.branch = {RayKind::Refraction, node, weight * specular.transmission};
+        context.glossy_origin.pdf = 0.0f;
         radiance += trace_ray<Record>(scene, transmitted, depth + 1, inside, context) * specular.transmission;
+    }
+    if (glossy_count > 0) {
+        if constexpr (Record) context.node = node;
+        radiance += glossy<Record>(scene, bsdf, si, sp, m.ior, glossy_count, depth, media, context);
     }
     return radiance;
 }

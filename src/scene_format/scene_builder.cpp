@@ -87,6 +87,7 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     const std::vector<std::string_view> integrators = integrator_names();
     s.integrator = t.choice("integrator", integrators, s.integrator);
     s.light_samples = count(t, "light_samples", s.light_samples, 1, SettingLimits::kMaxLightSamples);
+    s.glossy_samples = count(t, "glossy_samples", s.glossy_samples, 1, SettingLimits::kMaxGlossySamples);
     s.mis = t.choice("mis", kMisHeuristics, "power") == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
     s.aovs = read_aovs(t);
     if (const ParamTable* adaptive = t.table("adaptive")) {

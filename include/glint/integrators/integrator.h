@@ -33,6 +33,15 @@ struct RenderStats {
     [[nodiscard]] bool complete() const { return tiles_done == tiles; }
 };
 
+/// Where a glossy sample of the Whitted integrator left from, and with what density.
+struct GlossyOrigin {
+    Vec3 point;
+    /// Solid-angle density of the sampled direction over the glossy lobes; 0: not a glossy sample.
+    float pdf = 0.0f;
+    /// Glossy samples taken at that point.
+    uint32_t samples = 0;
+};
+
 /// Per-pixel-sample context handed to Li(): the sample generator, a ray counter and, when
 /// a pixel is being explained, the tree its rays are recorded in.
 struct TraceContext {
@@ -47,6 +56,13 @@ struct TraceContext {
     /// Where the camera ray's first hit goes when AOVs are rendered (null otherwise): the
     /// integrator fills it at the camera ray's hit and leaves it alone for a miss.
     FirstHit* first_hit = nullptr;
+    /// Whitted: the glossy sample that cast the ray being traced (density 0 for any other
+    /// ray), so that emission it finds on an area light is weighed against sampling that
+    /// light (MIS). Here for the reason `branch` is.
+    GlossyOrigin glossy_origin = {};
+    /// Whitted: true while tracing below a glossy sample, where glossy lobes take one sample
+    /// instead of glossy_samples, so a ray tree branches N ways once rather than N^depth.
+    bool below_glossy = false;
 };
 
 /// The threads this machine runs at once; more would not render faster.

@@ -23,10 +23,12 @@ namespace glint {
 
 enum class RayKind : uint8_t {
     Camera,
-    Reflection,  ///< Whitted's mirror reflection
-    Refraction,  ///< Whitted's refraction
-    Shadow,      ///< towards a light: blocked or not
-    Bounce,      ///< the path integrator's next vertex, from sampling the BSDF
+    Reflection,          ///< Whitted's mirror reflection
+    Refraction,          ///< Whitted's refraction
+    Shadow,              ///< towards a light: blocked or not
+    Bounce,              ///< the path integrator's next vertex, from sampling the BSDF
+    GlossyReflection,    ///< Whitted's sample of a rough surface's glossy reflection
+    GlossyTransmission,  ///< Whitted's sample of a rough dielectric's refraction
 };
 
 [[nodiscard]] std::string_view ray_kind_name(RayKind kind);
@@ -43,7 +45,7 @@ struct RayTreeNode {
     /// What this ray adds to the sample by itself, weight included.
     Color contribution;
 
-    /// Camera, reflection, refraction and bounce rays: what they met (none: the background).
+    /// Every kind but shadow rays: what they met (none: the background).
     bool hit = false;
     /// Where the ray ended: at its hit, or (shadow rays) at the light, infinite for a
     /// directional light.

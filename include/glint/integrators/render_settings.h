@@ -48,6 +48,7 @@ struct SettingLimits {
     /// worker thread's stack.
     static constexpr uint32_t kMaxDepth = 64;
     static constexpr uint32_t kMaxLightSamples = 1024;
+    static constexpr uint32_t kMaxGlossySamples = 1024;
     static constexpr float kMaxFilterRadius = 16.0f;
     static constexpr uint32_t kMaxThreads = 1024;
 };
@@ -67,6 +68,9 @@ struct RenderSettings {
     std::string integrator = "whitted";
     /// Whitted: samples per area light at every shading point (stratified among themselves).
     uint32_t light_samples = 1;
+    /// Whitted: samples of the glossy lobes at the first rough surface a ray tree meets
+    /// (stratified among themselves; one at the rough surfaces below it).
+    uint32_t glossy_samples = 4;
     /// Path: the MIS weighting of light and BSDF samples.
     MisHeuristic mis = MisHeuristic::Power;
     /// 0 = all cores.

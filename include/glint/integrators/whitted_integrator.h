@@ -12,17 +12,27 @@ class Bsdf;
 struct Material;
 struct Hit;
 struct SurfaceInteraction;
+struct ShadingPoint;
 
 /// Direct light (ambient, Lambert, optional Blinn-Phong) with shadow rays, recursive
 /// mirror reflection, and refraction with Schlick Fresnel and total internal reflection,
 /// following the material equation in docs/shading.md. Area lights are sampled
 /// `light_samples` times at every shading point, the samples stratified among themselves,
 /// so their penumbrae are smooth even at one sample per pixel.
+///
+/// Rough surfaces (GGX lobes, roughness > 0) are traced with `glossy_samples` stratified
+/// samples of their glossy lobes at the first rough surface of a ray tree, and one sample at
+/// rough surfaces below it (splitting once, not at every level). Direct light reaches the
+/// glossy lobes through light samples too; emission that glossy samples find on area lights
+/// is weighed against those light samples by Veach's power heuristic with sample counts
+/// (Veach 1997, §9.2.4), so that neither small highlights nor large lights are noisy.
 class WhittedIntegrator final : public Integrator {
 public:
-    explicit WhittedIntegrator(uint32_t max_depth = 5, uint32_t light_samples = 1)
-        : max_depth_(max_depth), light_samples_(light_samples < 1 ? 1 : light_samples) {}
-    /// The registry's factory: max_depth and light_samples from the settings.
+    explicit WhittedIntegrator(uint32_t max_depth = 5, uint32_t light_samples = 1, uint32_t glossy_samples = 4)
+        : max_depth_(max_depth),
+          light_samples_(light_samples < 1 ? 1 : light_samples),
+          glossy_samples_(glossy_samples < 1 ? 1 : glossy_samples) {}
+    /// The registry's factory: max_depth, light_samples and glossy_samples from the settings.
     [[nodiscard]] static std::unique_ptr<Integrator> create(const RenderSettings& settings);
 
     [[nodiscard]] Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const override;
@@ -42,13 +52,33 @@ private:
     template <bool Record>
     [[nodiscard]] Color shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
                               const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const;
-    /// Σ over lights of the BSDF's smooth lobes times the visible light (f·L·cosθ/pdf).
+    /// Σ over lights of the BSDF's smooth and glossy lobes times the visible light
+    /// (f·L·|cosθ|/pdf); with `glossy_count` glossy samples to be traced from here, the glossy
+    /// part of area lights' samples is MIS-weighted against them.
     template <bool Record>
     [[nodiscard]] Color direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
-                                     const Vec3& ng, TraceContext& context) const;
+                                     const Vec3& ng, uint32_t glossy_count, TraceContext& context) const;
+    /// The glossy lobes' light: `count` stratified samples, each traced at depth + 1 with
+    /// weight f·|cos|/pdf / count. Not inlined into shade(), which every hit runs: rough
+    /// surfaces are the rarer case.
+    template <bool Record>
+    [[gnu::noinline]] [[nodiscard]] Color glossy(const RenderScene& scene, const Bsdf& bsdf,
+                                                 const SurfaceInteraction& si, const ShadingPoint& sp, float ior,
+                                                 uint32_t count, uint32_t depth, const IorStack& media,
+                                                 TraceContext& context) const;
+    /// `emission` found by the glossy sample that cast the ray being traced
+    /// (context.glossy_origin) times its MIS weight, if it hit area light `object` at `si`.
+    /// Out of line: inlined, the product could fuse (FMA) with the next sum in the render's
+    /// instantiation of shade() but not in the recording one, which also records it, and
+    /// glint explain would differ from glint render in the last bit.
+    [[gnu::noinline]] [[nodiscard]] Color glossy_emission_weight(const RenderScene& scene, uint32_t object,
+                                                                 const SurfaceInteraction& si,
+                                                                 const TraceContext& context,
+                                                                 const Color& emission) const;
 
     uint32_t max_depth_;
     uint32_t light_samples_;
+    uint32_t glossy_samples_;
 };
 
 }  // namespace glint
