@@ -108,21 +108,15 @@ MaterialInfo MaterialConverter::convert(int index) {
     const float roughness = std::clamp(pbr.value("roughnessFactor", 1.0f), 0.0f, 1.0f);
     const Texture* base_texture = texture(pbr.value("baseColorTexture", nlohmann::json()), name, "baseColorTexture");
 
-    // Metallic-roughness to Whitted: the mirror is Schlick's Fresnel with
-    // F0 = mix(0.04, base, metallic). A Whitted tracer cannot blur a reflection, so a
-    // share `roughness` of a metal's reflection becomes diffuse (rough metals look matte,
-    // not like black mirrors) and rough dielectrics lose their 4% mirror.
-    const float smooth = 1.0f - roughness;
-    m.diffuse = base * (1.0f - metallic) + base * (metallic * roughness);
+    // Metallic-roughness on Glint's lobes (glTF 2.0, Appendix B): one GGX lobe of the file's
+    // roughness (alpha = roughness², as glTF defines it) whose Schlick F0 is the base colour
+    // for metal and 0.04 for the dielectric part, F0 = mix(0.04, base, metallic); the
+    // dielectric part's diffuse is base·(1 − metallic). Roughness 0 is a mirror.
+    m.diffuse = base * (1.0f - metallic);
     m.ambient = m.diffuse;
     m.texture = base_texture;
-    m.reflectivity = lerp(metallic, Color(0.04f * smooth * smooth), base * smooth);
+    m.reflectivity = lerp(metallic, Color(0.04f), base);
     m.fresnel_mirror = true;
-    // A Blinn-Phong highlight stands in for the microfacet lobe under point lights
-    // (exponent from the usual α = roughness² mapping, s = 2/α² − 2).
-    const float a = std::max(roughness * roughness, 1e-3f);
-    m.shininess = std::clamp(2.0f / (a * a) - 2.0f, 1.0f, 1e4f);
-    m.specular = roughness < 1.0f ? lerp(metallic, Color(0.04f), base) : Color(0.0f);
     m.roughness = roughness;
     if (pbr.contains("metallicRoughnessTexture")) notes_.ignored("metallicRoughnessTexture (factors used)", name);
 
@@ -134,7 +128,8 @@ MaterialInfo MaterialConverter::convert(int index) {
         if (m.emission.is_black() && m.emission_texture) m.emission_texture = nullptr;  // factor 0 turns it off
     }
 
-    // KHR_materials_transmission + KHR_materials_ior: a Whitted dielectric.
+    // KHR_materials_transmission + KHR_materials_ior: a dielectric, rough with the same
+    // roughness (the extension's transmission lobe shares the specular lobe's roughness).
     const auto& transmission = extension(j, "KHR_materials_transmission");
     m.transparency = std::clamp(transmission.value("transmissionFactor", 0.0f), 0.0f, 1.0f);
     if (transmission.contains("transmissionTexture")) notes_.ignored("transmissionTexture (factor used)", name);
