@@ -39,10 +39,7 @@ TEST(TomlSceneErrors, UnknownSection) {
 }
 
 TEST(TomlSceneErrors, UnknownKeyWithoutCloseMatchListsTheKeys) {
-    expect_error("[render]
-width = 64
-colour_space = \"srgb\"
-", "test.toml:3:1:",
+    expect_error("[render]\nwidth = 64\ncolour_space = \"srgb\"\n", "test.toml:3:1:",
                  {"unknown key 'colour_space'",
                   "expected one of: adaptive, aovs, filter, filter_radius, glossy_samples, height, integrator, "
                   "light_samples, max_depth, mis, seed, spp, width"});
