@@ -11,10 +11,18 @@
 set -euo pipefail
 binary=$1 seconds=$2 corpus=$3 regressions=$4
 scratch=$(mktemp -d)
+mkdir "$scratch/corpus"
 trap 'rm -rf "$scratch"' EXIT
 seeds=()
 for dir in "$corpus" "$regressions"; do
   [ -d "$dir" ] && seeds+=("$dir")
 done
+# The whole log goes to a file; what is printed leaves out the progress lines, new-function
+# lists and the libraries' complaints about broken inputs, so that a finding's report is not
+# cut off by CTest's limit on a failed test's output (a red CI run once showed only those).
+log="$scratch/fuzz.log"
+status=0
 "$binary" -seed=1 -fork=1 -ignore_timeouts=1 -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -print_final_stats=1 \
-  -artifact_prefix="$PWD/$(basename "$binary")-" "$scratch" "${seeds[@]}"
+  -artifact_prefix="$PWD/$(basename "$binary")-" "$scratch/corpus" "${seeds[@]}" >"$log" 2>&1 || status=$?
+grep -v -E '^#[0-9]+|NEW_FUNC|^libpng |^INFO: (Running|Seed|Loaded|seed corpus|-max_len|log from)' "$log" | head -c 200000 || true
+exit "$status"

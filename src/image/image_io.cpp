@@ -84,6 +84,33 @@ Image read_pixels(OIIO::ImageInput& input, const std::string& name, ColorEncodin
     return image;
 }
 
+/// Bytes in memory as OpenImageIO reads them, refusing offsets outside the bytes. OpenImageIO
+/// 2.4's IOMemReader takes any offset a reader asks for: a corrupt EXR's chunk table made
+/// OpenEXR read one byte before the buffer (a heap overflow found by fuzz/fuzz_image,
+/// regressions/fuzz_image/exr_chunk_offset_before_buffer). A derived class, not a sibling,
+/// so that readers that treat a "memreader" proxy as an IOMemReader still may.
+class BoundedMemoryReader final : public OIIO::Filesystem::IOMemReader {
+public:
+    using IOMemReader::IOMemReader;
+
+    bool seek(int64_t offset) override {
+        if (offset < 0 || offset > int64_t(m_buf.size())) return false;
+        m_pos = offset;
+        return true;
+    }
+    size_t read(void* out, size_t size) override {
+        const size_t n = pread(out, size, m_pos);
+        m_pos += int64_t(n);
+        return n;
+    }
+    size_t pread(void* out, size_t size, int64_t offset) override {
+        if (offset < 0 || offset >= int64_t(m_buf.size())) return 0;
+        const size_t n = std::min(size, size_t(int64_t(m_buf.size()) - offset));
+        std::memcpy(out, m_buf.data() + offset, n);
+        return n;
+    }
+};
+
 /// Straight (unassociated) alpha: colour textures with cut-outs must keep their colour at
 /// the edges, which OpenImageIO's default premultiplication would darken.
 OIIO::ImageSpec straight_alpha_config() {
@@ -124,7 +151,7 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
     // OpenImageIO picks the reader from the name's extension and falls back to sniffing the
     // bytes. In 2.4 a reader opened with a config spec takes the proxy from the spec's
     // "oiio:ioproxy" attribute (a pointer to the pointer), not only from the argument.
-    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    BoundedMemoryReader reader(bytes.data(), bytes.size());
     OIIO::Filesystem::IOProxy* proxy = &reader;
     OIIO::ImageSpec config = straight_alpha_config();
     config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);

@@ -77,6 +77,18 @@ struct SpecularLobes {
     std::optional<Vec3> refracted;
 };
 
+/// The glossy lobes of a rough material, which work in the frame (b1, b2, n). At namespace
+/// scope, not nested in Bsdf: clang decides std::optional<GlossyLobes> is not
+/// default-constructible while Bsdf, holding one, is still being defined (member
+/// initialisers are parsed only at its end), and then refuses emplace().
+struct GlossyLobes {
+    Vec3 b1, b2, wo_local;
+    GlossyConductor conductor;
+    float conductor_scale = 0.0f;  ///< 1 − t; 0 for no conductor
+    RoughDielectric dielectric;
+    float dielectric_scale = 0.0f;  ///< t; 0 for no rough dielectric
+};
+
 class Bsdf {
 public:
     /// `texture` multiplies kd (white for none). `n` is the unit shading normal and `ng` the
@@ -196,14 +208,6 @@ private:
     /// Relative index across the surface for the transmitted direction (eta_to/eta_from).
     float eta_ = 1.0f;
 
-    /// The glossy lobes of a rough material, which work in the frame (b1, b2, n).
-    struct GlossyLobes {
-        Vec3 b1, b2, wo_local;
-        GlossyConductor conductor;
-        float conductor_scale = 0.0f;  ///< 1 − t; 0 for no conductor
-        RoughDielectric dielectric;
-        float dielectric_scale = 0.0f;  ///< t; 0 for no rough dielectric
-    };
     /// Empty for a smooth material, whose Bsdf (built at every hit) then initialises none of it.
     std::optional<GlossyLobes> glossy_;
 };
