@@ -10,7 +10,40 @@
 
 namespace glint::app {
 
+namespace {
+
+/// The shutter --shutter OPEN,CLOSE or --time T asks for, checked before anything is loaded.
+std::optional<Shutter> shutter_option(const SceneOptions& opt) {
+    if (opt.shutter && opt.time) throw std::invalid_argument("--time and --shutter: expected one of them, not both");
+    if (opt.time) {
+        if (!std::isfinite(*opt.time))
+            throw std::invalid_argument(fmt::format("--time: expected a finite time; got {}", *opt.time));
+        return Shutter{*opt.time, *opt.time};
+    }
+    if (!opt.shutter) return std::nullopt;
+    const std::string& text = *opt.shutter;
+    const auto comma = text.find(',');
+    Shutter shutter;
+    try {
+        std::size_t used_open = 0, used_close = 0;
+        if (comma == std::string::npos) throw std::invalid_argument("no comma");
+        shutter.open = std::stof(text.substr(0, comma), &used_open);
+        shutter.close = std::stof(text.substr(comma + 1), &used_close);
+        if (used_open != comma || used_close != text.size() - comma - 1) throw std::invalid_argument("trailing text");
+    } catch (const std::exception&) {
+        throw std::invalid_argument(
+            fmt::format("--shutter: expected OPEN,CLOSE (two times, e.g. 0,0.5); got '{}'", text));
+    }
+    if (!std::isfinite(shutter.open) || !std::isfinite(shutter.close) || shutter.close < shutter.open)
+        throw std::invalid_argument(
+            fmt::format("--shutter: expected finite times with CLOSE at or after OPEN; got '{}'", text));
+    return shutter;
+}
+
+}  // namespace
+
 SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
+    const std::optional<Shutter> shutter = shutter_option(opt);
     // The lens options are checked before anything is loaded.
     if (opt.aperture && !(*opt.aperture >= 0.0f && std::isfinite(*opt.aperture)))
         throw std::invalid_argument(
@@ -34,6 +67,7 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
         if (opt.focus) lens.focus_distance = *opt.focus;
         camera.set_lens(lens);
     }
+    if (shutter) source.loaded.scene.camera.set_shutter(*shutter);
     if (!opt.env.empty()) {
         EnvironmentOptions env;
         if (!opt.env_kind.empty()) env.kind = parse_environment_kind(opt.env_kind);
@@ -52,6 +86,9 @@ void add_scene_options(CLI::App* cmd, SceneOptions& opt) {
     cmd->add_option("--aperture", opt.aperture,
                     "Lens aperture radius in world units: depth of field (0 = pinhole, the default)");
     cmd->add_option("--focus", opt.focus, "Distance to the plane of focus in world units (default: the scene's)");
+    cmd->add_option("--shutter", opt.shutter,
+                    "OPEN,CLOSE: when the shutter is open, in scene time (motion blur; default: the scene's)");
+    cmd->add_option("--time", opt.time, "Render the instant T of scene time: no motion blur (the shutter [T, T])");
     cmd->add_option("--env", opt.env, "HDR environment map (background and reflections)")->check(CLI::ExistingFile);
     cmd->add_option("--env-kind", opt.env_kind, "Environment layout (default: 2:1 equirect, 1:1 spheremap)")
         ->check(CLI::IsMember({"equirect", "spheremap"}));

@@ -20,6 +20,9 @@ struct SceneOptions {
     float env_intensity = 1.0f;
     /// --aperture and --focus: the camera's lens radius and focus distance, world units.
     std::optional<float> aperture, focus;
+    /// --shutter OPEN,CLOSE and --time T (an instant, [T, T]), in scene time.
+    std::optional<std::string> shutter;
+    std::optional<float> time;
 };
 
 /// What `render` and `info` load: a scene file, or the built-in scene.
@@ -29,8 +32,8 @@ using SceneSource = SceneFile;
 /// environment options. Throws SceneError, ImageError or std::invalid_argument.
 [[nodiscard]] SceneSource load_scene(const std::string& path, const SceneOptions& options);
 
-/// Add --camera, --aperture, --focus, --env, --env-kind, --env-rotation and --env-intensity
-/// to `command`.
+/// Add --camera, --aperture, --focus, --shutter, --time, --env, --env-kind, --env-rotation
+/// and --env-intensity to `command`.
 void add_scene_options(CLI::App* command, SceneOptions& options);
 
 }  // namespace glint::app

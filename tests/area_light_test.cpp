@@ -209,7 +209,7 @@ TEST(AreaLightShadows, SphereLightPenumbraHasTheWidthOfItsTangentPlanes) {
         for (int i = 0; i < kSamples; ++i) {
             const Vec2 u = correlated_multi_jitter(uint32_t(i), kSamples, 12345u);
             const LightSample ls = light.sample(p, u);
-            if (!prepared.occluded(shadow_ray(p, Vec3(0, 1, 0), ls))) ++visible;
+            if (!prepared.occluded(shadow_ray(p, Vec3(0, 1, 0), ls, 0.0f))) ++visible;
         }
         return double(visible) / kSamples;
     };

@@ -122,6 +122,16 @@ check_refused "--aov: expected a comma-separated list of albedo, normal, depth, 
 check_refused "refused.png: AOVs (depth) are written as extra channels of an EXR image" --aov depth
 check_refused "--spp: expected a power of 4 (1, 4, 16, 64, ...) with adaptive sampling" --adaptive --spp 9
 check_refused "--adaptive-threshold: expected a positive relative error" --adaptive-threshold -1
+check_refused "--shutter: expected finite times with CLOSE at or after OPEN; got '1,0'" --shutter 1,0
+check_refused "--shutter: expected OPEN,CLOSE (two times, e.g. 0,0.5); got '0.5'" --shutter 0.5
+check_refused "--time and --shutter: expected one of them, not both" --time 0 --shutter 0,1
+# --time T is the instant [T, T]: the moving balls are sharp, and the same as --shutter T,T.
+mb=("$scenes/motion_blur.toml" --width 48 --height 36 --spp 4 --threads 1 -q)
+"$glint" render "${mb[@]}" --time 0.5 -o instant.pfm || fail "--time 0.5 failed"
+"$glint" render "${mb[@]}" --shutter 0.5,0.5 -o same_instant.pfm || fail "--shutter 0.5,0.5 failed"
+"$glint" render "${mb[@]}" -o blurred.pfm || fail "motion_blur.toml failed"
+cmp -s instant.pfm same_instant.pfm || fail "--time 0.5 and --shutter 0.5,0.5 differ"
+cmp -s instant.pfm blurred.pfm && fail "--time 0.5 rendered the same image as the whole shutter"
 if "$glint" render -o refused.png --spp abc 2>/dev/null; then fail "--spp abc accepted"; else
   [ $? -eq 1 ] || fail "a malformed number does not exit with 1"; fi
 

@@ -48,10 +48,10 @@ CostMap compute_cost_map(const RenderScene& scene, const Integrator& integrator,
                 for (const RayTreeNode& node : tree.nodes()) {
                     if (node.kind == RayKind::Shadow) {
                         ++cost.shadow_rays;
-                        (void)scene.occluded_counted(Ray(node.origin, node.direction, 0.0f, node.t),
+                        (void)scene.occluded_counted(Ray(node.origin, node.direction, 0.0f, node.t, node.time),
                                                      scene.dielectric_shadows(), stats);
                     } else {
-                        Ray ray(node.origin, node.direction);
+                        Ray ray(node.origin, node.direction, 0.0f, kInfinity, node.time);
                         Hit hit;
                         (void)scene.intersect_counted(ray, hit, stats);
                         cost.depth = std::max(cost.depth, node.depth);

@@ -90,8 +90,11 @@ CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& cam
     // The lens takes a sampler dimension only when there is a lens, so that a pinhole
     // camera's images stay what they were.
     const Vec2 u_lens = camera.lens().is_pinhole() ? Vec2() : context.sampler.next_2d();
+    // Likewise time, only when something moves (motion blur): a static scene's images do
+    // not depend on the shutter.
+    const float time = scene.has_motion() ? camera.time(context.sampler.next_1d()) : camera.shutter().open;
     const Ray ray =
-        camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height), u_lens);
+        camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height), u_lens, time);
     sample.radiance = Li(scene, ray, context);
     return sample;
 }

@@ -101,7 +101,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
                     ++context.rays;
                     // Light under the surface (a rough dielectric's transmission) is sampled
                     // from that side.
-                    const Ray shadow = shadow_ray(si.p, dot(ls.direction, sp.ng) < 0.0f ? -sp.ng : sp.ng, ls);
+                    const Ray shadow = shadow_ray(si.p, dot(ls.direction, sp.ng) < 0.0f ? -sp.ng : sp.ng, ls, si.time);
                     const bool blocked = scene.occluded(shadow, DielectricShadows::Opaque);
                     Color direct;
                     if (!blocked) {
@@ -127,9 +127,9 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         previous_point = si.p;
         if (bs->flags & kBsdfTransmission) {
             media = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
-            ray = Ray(offset_ray_origin(si.p, -sp.ng), bs->wi);
+            ray = Ray(offset_ray_origin(si.p, -sp.ng), bs->wi, 0.0f, kInfinity, si.time);
         } else {
-            ray = Ray(offset_ray_origin(si.p, sp.ng), bs->wi);
+            ray = Ray(offset_ray_origin(si.p, sp.ng), bs->wi, 0.0f, kInfinity, si.time);
         }
 
         // Russian roulette (Arvo & Kirk 1990): unbiased, since survivors are reweighted.

@@ -35,6 +35,7 @@ int32_t RayTree::add_ray(RayKind kind, int32_t parent, uint32_t depth, const Ray
     node.depth = depth;
     node.origin = ray.origin;
     node.direction = ray.direction;
+    node.time = ray.time;
     node.weight = weight;
     nodes_.push_back(node);
     return static_cast<int32_t>(nodes_.size() - 1);

@@ -76,7 +76,7 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         // blocks it whatever dielectric_shadows says (the glossy samples bring the light that
         // finds its way through the glass; docs/shading.md).
         const bool through = dot(ls.direction, ng) < 0.0f;
-        const Ray shadow = shadow_ray(through ? offset_ray_origin(si.p, -ng) : origin, ls);
+        const Ray shadow = shadow_ray(through ? offset_ray_origin(si.p, -ng) : origin, ls, si.time);
         if (through ? scene.occluded(shadow, DielectricShadows::Opaque) : scene.occluded(shadow)) {
             if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, true, Color());
             return;
@@ -138,7 +138,7 @@ Color WhittedIntegrator::glossy(const RenderScene& scene, const Bsdf& bsdf, cons
         // A refracted sample enters or leaves the material's medium, as the delta refraction does.
         const IorStack beyond =
             transmitted ? (sp.entering ? media.entered(sp.medium, ior) : media.left(sp.medium)) : media;
-        const Ray sampled(offset_ray_origin(si.p, transmitted ? -sp.ng : sp.ng), s->wi);
+        const Ray sampled(offset_ray_origin(si.p, transmitted ? -sp.ng : sp.ng), s->wi, 0.0f, kInfinity, si.time);
         context.glossy_origin = {si.p, s->pdf, count};
         if constexpr (Record)
             context.branch = {transmitted ? RayKind::GlossyTransmission : RayKind::GlossyReflection, node, weight * w};
@@ -211,14 +211,14 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     const SpecularLobes& specular = bsdf.specular();
     // A reflection that the shading normal bends below the true surface would start inside it.
     if (!specular.reflection.is_black() && dot(specular.reflected, sp.ng) > 0.0f) {
-        const Ray reflected(offset_ray_origin(si.p, sp.ng), specular.reflected);
+        const Ray reflected(offset_ray_origin(si.p, sp.ng), specular.reflected, 0.0f, kInfinity, si.time);
         if constexpr (Record) context.branch = {RayKind::Reflection, node, weight * specular.reflection};
         context.glossy_origin.pdf = 0.0f;
         radiance += specular.reflection * trace_ray<Record>(scene, reflected, depth + 1, media, context);
     }
     if (specular.transmission > 0.0f && specular.refracted) {
         const IorStack inside = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
-        const Ray transmitted(offset_ray_origin(si.p, -sp.ng), *specular.refracted);
+        const Ray transmitted(offset_ray_origin(si.p, -sp.ng), *specular.refracted, 0.0f, kInfinity, si.time);
         if constexpr (Record) context.branch = {RayKind::Refraction, node, weight * specular.transmission};
         context.glossy_origin.pdf = 0.0f;
         radiance += trace_ray<Record>(scene, transmitted, depth + 1, inside, context) * specular.transmission;

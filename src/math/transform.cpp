@@ -128,7 +128,7 @@ Vec3 Transform::normal(const Vec3& n) const {
             a[0][2] * n.x + a[1][2] * n.y + a[2][2] * n.z};
 }
 
-Ray Transform::ray(const Ray& r) const { return {point(r.origin), vector(r.direction), r.tmin, r.tmax}; }
+Ray Transform::ray(const Ray& r) const { return {point(r.origin), vector(r.direction), r.tmin, r.tmax, r.time}; }
 
 Bounds3 Transform::bounds(const Bounds3& b) const {
     Bounds3 out;

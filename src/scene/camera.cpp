@@ -9,18 +9,53 @@ namespace glint {
 
 Camera::Camera() : Camera(perspective({22.0f, 24.0f, 26.0f}, {0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 52.0f)) {}
 
-Camera::Camera(Projection projection, const Vec3& eye, const Vec3& target, const Vec3& up)
-    : projection_(projection), eye_(eye) {
+Camera::Basis Camera::make_basis(const Vec3& eye, const Vec3& target, const Vec3& up) {
     const Vec3 view = target - eye;
     if (!(length(view) > 0.0f) || !is_finite(view)) throw std::invalid_argument("camera position equals its target");
-    forward_ = normalize(view);
-    const Vec3 side = cross(forward_, up);
+    Basis b;
+    b.eye = eye;
+    b.forward = normalize(view);
+    const Vec3 side = cross(b.forward, up);
     if (!(length(side) > 1e-6f * length(up)))
         throw std::invalid_argument("camera up vector is parallel to the view direction");
-    right_ = normalize(side);                  // I_x = d_c × u_c
-    up_ = normalize(cross(right_, forward_));  // u_c made orthogonal to d_c
+    b.right = normalize(side);                    // I_x = d_c × u_c
+    b.up = normalize(cross(b.right, b.forward));  // u_c made orthogonal to d_c
+    return b;
+}
+
+Camera::Camera(Projection projection, const Vec3& eye, const Vec3& target, const Vec3& up)
+    : projection_(projection), target_(target), up_hint_(up) {
+    const Basis b = make_basis(eye, target, up);
+    eye_ = b.eye;
+    forward_ = b.forward;
+    right_ = b.right;
+    up_ = b.up;
     // A lens given later focuses on the target unless told otherwise.
-    lens_.focus_distance = length(view);
+    lens_.focus_distance = length(target - eye);
+}
+
+void Camera::set_shutter(const Shutter& shutter) {
+    if (!std::isfinite(shutter.open) || !std::isfinite(shutter.close))
+        throw std::invalid_argument("shutter times must be finite");
+    if (shutter.close < shutter.open) throw std::invalid_argument("the shutter closes before it opens");
+    shutter_ = shutter;
+}
+
+void Camera::set_motion(const Vec3& eye_end, const Vec3& target_end) {
+    // The view is a straight-line blend of the two; check it along the way (a pass of the
+    // eye through the target, or a view along up, shows as a degenerate basis).
+    constexpr int kChecks = 64;
+    for (int i = 0; i <= kChecks; ++i) {
+        const float s = float(i) / float(kChecks);
+        (void)make_basis(lerp(s, eye_, eye_end), lerp(s, target_, target_end), up_hint_);
+    }
+    end_ = EndPose{eye_end, target_end};
+}
+
+Camera::Basis Camera::basis_at(float time) const {
+    if (!end_ || !(time > 0.0f)) return {eye_, forward_, right_, up_};
+    if (time >= 1.0f) return make_basis(end_->eye, end_->target, up_hint_);
+    return make_basis(lerp(time, eye_, end_->eye), lerp(time, target_, end_->target), up_hint_);
 }
 
 Camera Camera::perspective(const Vec3& eye, const Vec3& target, const Vec3& up, float vertical_fov) {
@@ -49,27 +84,30 @@ void Camera::set_lens(const ThinLens& lens) {
     lens_ = lens;
 }
 
-Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 u_lens) const {
+Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 u_lens, float time) const {
+    const Basis b = basis_at(time);
     // Screen position in [-1, 1]², (-1, -1) bottom-left (handout §4.2.2).
     const float sx = 2.0f * x / float(width) - 1.0f;
     const float sy = 1.0f - 2.0f * y / float(height);
     const float aspect = float(width) / float(height);
-    Vec3 origin = eye_, direction = forward_;
+    Vec3 origin = b.eye, direction = b.forward;
     if (projection_ == Projection::Orthographic) {
         const float half_h = 0.5f * view_height_;
-        origin = eye_ + right_ * (sx * half_h * aspect) + up_ * (sy * half_h);
+        origin = b.eye + b.right * (sx * half_h * aspect) + b.up * (sy * half_h);
     } else {
         const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
-        direction = forward_ + (right_ * (sx * aspect) + up_ * sy) * tan_half;
+        direction = b.forward + (b.right * (sx * aspect) + b.up * sy) * tan_half;
     }
-    if (lens_.is_pinhole()) return {origin, projection_ == Projection::Orthographic ? forward_ : normalize(direction)};
+    if (lens_.is_pinhole())
+        return {origin, projection_ == Projection::Orthographic ? b.forward : normalize(direction), 0.0f, kInfinity,
+                time};
     // The pinhole ray meets the plane of focus at origin + direction·focus_distance (its
     // direction has unit length along forward); the lens ray leaves from a point of the
     // aperture and passes there (pbrt-v4's PerspectiveCamera::GenerateRay).
     const Vec3 focus = origin + direction * lens_.focus_distance;
     const Vec2 a = lens_.sample_aperture(u_lens);
-    const Vec3 from = origin + right_ * a.x + up_ * a.y;
-    return {from, normalize(focus - from)};
+    const Vec3 from = origin + b.right * a.x + b.up * a.y;
+    return {from, normalize(focus - from), 0.0f, kInfinity, time};
 }
 
 std::optional<Vec2> Camera::project(const Vec3& p, int width, int height) const {

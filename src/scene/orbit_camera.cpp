@@ -39,6 +39,7 @@ OrbitCamera OrbitCamera::from(const Camera& camera, float focus_distance) {
     orbit.vertical_fov_ = camera.vertical_fov();
     orbit.view_height_ = camera.view_height();
     orbit.lens_ = camera.lens();
+    orbit.shutter_ = camera.shutter();
     Vec3 a, b;
     horizontal_axes(orbit.up_, a, b);
     const Vec3 to_eye = -camera.forward();
@@ -58,6 +59,7 @@ Camera OrbitCamera::camera() const {
     Camera view = projection_ == Projection::Orthographic ? Camera::orthographic(eye(), target_, up_, view_height_)
                                                           : Camera::perspective(eye(), target_, up_, vertical_fov_);
     view.set_lens(lens_);
+    view.set_shutter(shutter_);
     return view;
 }
 
@@ -113,6 +115,7 @@ std::string OrbitCamera::toml() const {
         if (lens_.blades != 0)
             text += fmt::format("aperture_blades = {}\naperture_rotation = {:.7g}\n", lens_.blades, lens_.rotation);
     }
+    if (shutter_ != Shutter{}) text += fmt::format("shutter = [{:.7g}, {:.7g}]\n", shutter_.open, shutter_.close);
     return text;
 }
 

@@ -27,8 +27,17 @@ RenderScene::RenderScene(Scene description) : scene_(std::move(description)) {
             hot.transformed = true;
         }
         hot.dielectric = o.material < scene_.materials().size() && scene_.material(o.material).is_dielectric();
-        boxes[i] = o.world_bounds();
+        if (o.motion) {
+            // The top level bounds a moving object over the time the shutter is open
+            // (pbrt-v4's AnimatedTransform::MotionBounds).
+            hot.motion = &*o.motion;
+            const Shutter& shutter = scene_.camera.shutter();
+            boxes[i] = o.motion->bounds(o.shape->bounds(), shutter.open, shutter.close);
+        } else {
+            boxes[i] = o.world_bounds();
+        }
     }
+    has_motion_ = scene_.has_motion();
     build_area_lights();
     // Top level: few, large primitives; one per leaf keeps every object test behind a box test.
     BvhBuildConfig config;
@@ -44,7 +53,8 @@ void RenderScene::build_area_lights() {
     const std::vector<SceneObject>& objects = scene_.objects();
     for (size_t i = 0; i < objects.size(); ++i) {
         const SceneObject& o = objects[i];
-        if (!scene_.emits_light(o)) continue;
+        // A moving object is never a light (Scene::set_motion).
+        if (!scene_.emits_light(o) || o.motion) continue;
         const std::optional<Transform> transform =
             o.has_transform ? std::optional<Transform>(o.world_from_object) : std::nullopt;
         if (o.emitter) {
@@ -77,7 +87,11 @@ template <class ShapeIntersect>
 bool RenderScene::intersect_object_with(uint32_t index, Ray& ray, Hit& hit,
                                         const ShapeIntersect& shape_intersect) const {
     const HotObject& o = objects_[index];
-    if (!o.transformed) {
+    if (o.motion) {
+        Ray local = o.motion->at(ray.time).inverse().ray(ray);
+        if (!shape_intersect(*o.shape, local)) return false;
+        ray.tmax = local.tmax;
+    } else if (!o.transformed) {
         if (!shape_intersect(*o.shape, ray)) return false;
     } else {
         // Transform the ray into object space without renormalising: t is the same in both.
@@ -96,6 +110,7 @@ bool RenderScene::intersect_object(uint32_t index, Ray& ray, Hit& hit) const {
 bool RenderScene::occluded_by_object(uint32_t index, const Ray& ray, DielectricShadows mode) const {
     const HotObject& o = objects_[index];
     if (o.dielectric && mode == DielectricShadows::None) return false;
+    if (o.motion) return o.shape->occluded(o.motion->at(ray.time).inverse().ray(ray));
     return o.transformed ? o.shape->occluded(o.object_from_world.ray(ray)) : o.shape->occluded(ray);
 }
 
@@ -120,6 +135,7 @@ bool RenderScene::occluded_counted(const Ray& ray, DielectricShadows mode, Trave
     auto occluded_by = [&](uint32_t index, Ray& rr) {
         const HotObject& o = objects_[index];
         if (o.dielectric && mode == DielectricShadows::None) return false;
+        if (o.motion) return o.shape->occluded_counted(o.motion->at(rr.time).inverse().ray(rr), stats);
         return o.shape->occluded_counted(o.transformed ? o.object_from_world.ray(rr) : rr, stats);
     };
     return top_level_.traverse<true>(r, occluded_by, TraversalCount{&stats});
@@ -132,12 +148,16 @@ SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) cons
     if (!hot.transformed) {
         o.shape->interaction(ray, hit, si);
     } else {
-        o.shape->interaction(hot.object_from_world.ray(ray), hit, si);
-        si.p = o.world_from_object.point(si.p);
-        si.geometric_normal = normalize(o.world_from_object.normal(si.geometric_normal));
-        si.shading_normal = normalize(o.world_from_object.normal(si.shading_normal));
+        Transform moved;
+        if (hot.motion) moved = hot.motion->at(ray.time);
+        const Transform& world_from_object = hot.motion ? moved : o.world_from_object;
+        o.shape->interaction(world_from_object.inverse().ray(ray), hit, si);
+        si.p = world_from_object.point(si.p);
+        si.geometric_normal = normalize(world_from_object.normal(si.geometric_normal));
+        si.shading_normal = normalize(world_from_object.normal(si.shading_normal));
         si.front_face = dot(ray.direction, si.geometric_normal) < 0.0f;
     }
+    si.time = ray.time;
     if (!si.blends_materials) si.materials[0] = o.material;
     return si;
 }

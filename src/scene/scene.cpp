@@ -1,6 +1,7 @@
 #include "glint/scene/scene.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace glint {
 
@@ -37,17 +38,20 @@ uint32_t Scene::add_area_light(std::shared_ptr<Shape> shape, const Emitter& emit
     Material black;
     black.name = name.empty() ? "<area light>" : "<area light " + name + ">";
     black.diffuse = Color(0.0f);
-    const uint32_t object = add_object(std::move(shape), add_material(std::move(black)), world_from_object, std::move(name));
+    const uint32_t object =
+        add_object(std::move(shape), add_material(std::move(black)), world_from_object, std::move(name));
     objects_[object].emitter = emitter;
     return object;
 }
 
 bool Scene::emits_light(const SceneObject& o) const {
-    return o.emitter || (emission_lights && o.material < materials_.size() && !materials_[o.material].emission.is_black());
+    return o.emitter ||
+           (emission_lights && o.material < materials_.size() && !materials_[o.material].emission.is_black());
 }
 
 bool Scene::has_emitters() const {
-    return !lights_.empty() || std::any_of(objects_.begin(), objects_.end(), [&](const SceneObject& o) { return emits_light(o); });
+    return !lights_.empty() ||
+           std::any_of(objects_.begin(), objects_.end(), [&](const SceneObject& o) { return emits_light(o); });
 }
 
 uint32_t Scene::add_object(std::shared_ptr<Shape> shape, uint32_t material,
@@ -62,6 +66,22 @@ uint32_t Scene::add_object(std::shared_ptr<Shape> shape, uint32_t material,
     }
     objects_.push_back(std::move(object));
     return static_cast<uint32_t>(objects_.size() - 1);
+}
+
+void Scene::set_motion(uint32_t index, AnimatedTransform motion) {
+    SceneObject& o = objects_.at(index);
+    if (emits_light(o))
+        throw std::invalid_argument(
+            "an object that lights the scene cannot move (moving lights are not supported; with emission_lights = "
+            "false its emission is only seen, and it may)");
+    o.world_from_object = motion.keys().front().transform;
+    o.has_transform = true;
+    o.motion = std::move(motion);
+}
+
+bool Scene::has_motion() const {
+    return camera.moves() ||
+           std::any_of(objects_.begin(), objects_.end(), [](const SceneObject& o) { return o.motion; });
 }
 
 Bounds3 Scene::world_bounds() const {

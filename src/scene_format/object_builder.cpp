@@ -4,6 +4,7 @@
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/scene/scene.h"
 #include "glint/scene_format/did_you_mean.h"
+#include "glint/scene_format/motion_params.h"
 #include "glint/scene_format/registry.h"
 #include "glint/scene_format/transform_params.h"
 
@@ -16,9 +17,32 @@ namespace glint {
 namespace {
 
 using ShapeLibrary = std::map<std::string, std::shared_ptr<Shape>>;
+using MotionKeys = std::optional<std::vector<MotionKey>>;
+
+/// Make objects [first, end) move by `keys`, which placed them at their first key: each
+/// keeps its place relative to the keys (a mesh file's parts move as one).
+void set_motion(const ParamTable& t, const MotionKeys& keys, uint32_t first, BuildContext& context) {
+    if (!keys) return;
+    Scene& scene = context.scene();
+    const Transform first_from_world = keys->front().transform.inverse();
+    const auto end = uint32_t(scene.objects().size());
+    for (uint32_t object = first; object < end; ++object) {
+        const Transform relative = first_from_world * scene.objects()[object].world_from_object;
+        std::vector<MotionKey> placed = *keys;
+        for (MotionKey& key : placed) key.transform = key.transform * relative;
+        try {
+            scene.set_motion(object, AnimatedTransform(std::move(placed)));
+        } catch (const std::invalid_argument& e) {
+            const char* key = t.find("motion") ? "motion" : "transform_end";
+            t.fail(key, fmt::format("an object Glint can move: {}", e.what()));
+        }
+    }
+}
 
 /// A mesh file placed by `[[objects]]`: all its meshes, with its materials or `material`.
-void import_file(const ParamTable& t, const std::optional<Transform>& transform, BuildContext& context) {
+void import_file(const ParamTable& t, const std::optional<Transform>& transform, const MotionKeys& keys,
+                 BuildContext& context) {
+    const auto first = uint32_t(context.scene().objects().size());
     const std::filesystem::path path = context.input_file(t, "file");
     std::optional<uint32_t> override_material;
     if (const ParamValue* m = t.find("material")) override_material = context.material(*m, t.name_of("material"));
@@ -31,6 +55,7 @@ void import_file(const ParamTable& t, const std::optional<Transform>& transform,
         // The importer names the file; add where the scene asked for it.
         throw_scene_error(t.find("file")->where(), fmt::format("cannot import {}: {}", t.name_of("file"), e.what()));
     }
+    set_motion(t, keys, first, context);
 }
 
 /// The per-vertex materials of a mesh (handout §6.1.1), if it has them.
@@ -55,8 +80,12 @@ void apply_cutout(const ParamTable& t, Shape& shape, const Material& m) {
 }
 
 void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& context) {
+    const MotionKeys keys = read_motion_keys(t);
     std::optional<Transform> transform;
-    if (const ParamValue* v = t.find("transform")) transform = read_transform(*v, t.name_of("transform"));
+    if (keys)
+        transform = keys->front().transform;
+    else if (const ParamValue* v = t.find("transform"))
+        transform = read_transform(*v, t.name_of("transform"));
     std::shared_ptr<Shape> shape;
     if (const ParamValue* ref = t.find("shape")) {
         if (t.find("type")) t.fail("type", "no type for an object that places a named shape (shape = ...)");
@@ -70,7 +99,7 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
         shape = it->second;
     } else {
         const ShapeType& type = chosen_type(t, shape_types());
-        if (type.name == "mesh" && t.find("file")) return import_file(t, transform, context);
+        if (type.name == "mesh" && t.find("file")) return import_file(t, transform, keys, context);
         shape = type.create(t, context);
     }
     // A mesh with per-vertex materials takes its first vertex's as the object's (any will
@@ -82,7 +111,8 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
     if (context.scene().material(material).alpha_texture) apply_cutout(t, *shape, context.scene().material(material));
     const std::string name = t.string("name", "");
     t.reject_unknown_keys();
-    context.scene().add_object(std::move(shape), material, transform, name);
+    const uint32_t object = context.scene().add_object(std::move(shape), material, transform, name);
+    set_motion(t, keys, object, context);
 }
 
 }  // namespace

@@ -139,6 +139,15 @@ ThinLens read_lens(const ParamTable& t, float vertical_fov, float look_at_distan
     return lens;
 }
 
+/// `[camera] shutter = [open, close]` in scene time (docs/scene-format.md, "Motion").
+Shutter read_shutter(const ParamTable& t) {
+    const ParamValue* v = t.find("shutter");
+    if (!v) return {};
+    const Vec2 times = v->as_vec2(t.name_of("shutter"));
+    if (!(times.y >= times.x)) v->fail(t.name_of("shutter"), "[open, close] with close at or after open");
+    return {times.x, times.y};
+}
+
 Camera read_camera(const ParamTable& t) {
     const std::string type = t.choice("type", kProjections, "perspective");
     const Vec3 position = t.require_vec3("position");
@@ -153,18 +162,34 @@ Camera read_camera(const ParamTable& t) {
         if (!(size > 0.0f)) t.fail("height", "a positive view height in world units");
     }
     const ThinLens lens = read_lens(t, type == "perspective" ? size : 0.0f, length(look_at - position));
+    const Shutter shutter = read_shutter(t);
+    // A moving camera: at position_end looking at look_at_end at time 1 (either defaults to
+    // where the camera is at time 0).
+    const bool moves = t.find("position_end") || t.find("look_at_end");
+    const Vec3 position_end = t.vec3("position_end", position);
+    const Vec3 look_at_end = t.vec3("look_at_end", look_at);
     t.reject_unknown_keys();
+    Camera camera;
     try {
-        Camera camera = type == "perspective" ? Camera::perspective(position, look_at, up, size)
-                                              : Camera::orthographic(position, look_at, up, size);
+        camera = type == "perspective" ? Camera::perspective(position, look_at, up, size)
+                                       : Camera::orthographic(position, look_at, up, size);
         camera.set_lens(lens);
-        return camera;
+        camera.set_shutter(shutter);
     } catch (const std::invalid_argument& e) {
         t.fail_here(
             fmt::format("camera: {}; expected distinct position and look_at and an up vector off the view "
                         "direction",
                         e.what()));
     }
+    if (moves) {
+        try {
+            camera.set_motion(position_end, look_at_end);
+        } catch (const std::invalid_argument& e) {
+            t.fail(t.find("position_end") ? "position_end" : "look_at_end",
+                   fmt::format("a camera motion whose view stays defined ({})", e.what()));
+        }
+    }
+    return camera;
 }
 
 Background read_background(const ParamTable& t, BuildContext& context) {

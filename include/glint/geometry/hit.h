@@ -43,6 +43,8 @@ struct SurfaceInteraction {
     std::array<uint32_t, 3> materials{0, 0, 0};
     std::array<float, 3> material_weights{1.0f, 0.0f, 0.0f};
     bool blends_materials = false;
+    /// The time of the ray that hit (motion blur): rays spawned here travel at it.
+    float time = 0.0f;
 };
 
 }  // namespace glint

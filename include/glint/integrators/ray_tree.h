@@ -40,6 +40,8 @@ struct RayTreeNode {
     /// Reflection/refraction depth (path length for the path integrator).
     uint32_t depth = 0;
     Vec3 origin, direction;
+    /// The scene time the ray travelled at (motion blur).
+    float time = 0.0f;
     /// Throughput from the camera to this ray: its radiance counts this much in the sample.
     Color weight{1.0f};
     /// What this ray adds to the sample by itself, weight included.

@@ -84,20 +84,21 @@ inline void record_first_hit(FirstHit& out, const Ray& camera_ray, const Surface
 /// The shadow ray from `origin`, a surface point already moved off its surface to the side
 /// the light is on (offset_ray_origin), to a light sample: unbounded for directional lights,
 /// ending at the light's point for point lights, and ending just off the surface of an area
-/// light so that it cannot block itself. A point lit by several lights offsets once.
-[[nodiscard]] inline Ray shadow_ray(const Vec3& origin, const LightSample& ls) {
-    if (ls.is_delta) return Ray(origin, ls.direction, 0.0f, ls.distance);
+/// light so that it cannot block itself. A point lit by several lights offsets once. The
+/// ray travels at `time`, the time of the ray that found the point.
+[[nodiscard]] inline Ray shadow_ray(const Vec3& origin, const LightSample& ls, float time) {
+    if (ls.is_delta) return Ray(origin, ls.direction, 0.0f, ls.distance, time);
     const Vec3 target = offset_ray_origin(ls.point, ls.normal);
     const Vec3 d = target - origin;
     const float dist = length(d);
     // Stop a hair short of the offset end point: the light's own surface lies beyond it.
-    return Ray(origin, d / dist, 0.0f, dist * (1.0f - 1e-4f));
+    return Ray(origin, d / dist, 0.0f, dist * (1.0f - 1e-4f), time);
 }
 
 /// The shadow ray from surface point `p` (geometric normal `ng` on the side the light is) to
-/// a light sample.
-[[nodiscard]] inline Ray shadow_ray(const Vec3& p, const Vec3& ng, const LightSample& ls) {
-    return shadow_ray(offset_ray_origin(p, ng), ls);
+/// a light sample, at `time`.
+[[nodiscard]] inline Ray shadow_ray(const Vec3& p, const Vec3& ng, const LightSample& ls, float time) {
+    return shadow_ray(offset_ray_origin(p, ng), ls, time);
 }
 
 }  // namespace glint

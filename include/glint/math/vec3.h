@@ -49,6 +49,7 @@ constexpr Vec3 operator*(float s, const Vec3& v) { return v * s; }
 [[nodiscard]] inline Vec3 max(const Vec3& a, const Vec3& b) {
     return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
+[[nodiscard]] constexpr Vec3 lerp(float t, const Vec3& a, const Vec3& b) { return a * (1.0f - t) + b * t; }
 [[nodiscard]] inline Vec3 abs(const Vec3& v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
 [[nodiscard]] inline float max_component(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
 [[nodiscard]] inline int max_axis(const Vec3& v) { return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2); }

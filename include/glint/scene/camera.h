@@ -12,6 +12,15 @@ namespace glint {
 
 enum class Projection { Perspective, Orthographic };
 
+/// When the shutter is open, in scene time (docs/scene-format.md): each camera ray takes a
+/// time in [open, close], where moving objects and a moving camera are then. Open equal to
+/// close is an instant: no blur.
+struct Shutter {
+    float open = 0.0f;
+    float close = 1.0f;
+    bool operator==(const Shutter&) const = default;
+};
+
 /// Built from look-at parameters, as the handout's image plane (§4.2): the view direction
 /// d_c, the image plane's axes I_x = d_c × u_c and I_y = u_c (u_c made orthogonal to d_c),
 /// half-height tan(θ/2) at distance 1 and half-width tan(θ/2)·aspect.
@@ -30,14 +39,28 @@ public:
     void set_lens(const ThinLens& lens);
     [[nodiscard]] const ThinLens& lens() const { return lens_; }
 
+    /// Throws std::invalid_argument for a time that is not finite or close before open.
+    void set_shutter(const Shutter& shutter);
+    [[nodiscard]] const Shutter& shutter() const { return shutter_; }
+    /// The time a camera ray takes for `u` in [0, 1): uniform over the shutter interval.
+    [[nodiscard]] float time(float u) const { return shutter_.open + u * (shutter_.close - shutter_.open); }
+    /// Move the camera: it is where it was made at time 0 and at `eye_end` looking at
+    /// `target_end` at time 1 (the keys objects use, transform and transform_end), in between
+    /// on straight lines, held before and after. Throws std::invalid_argument if the view
+    /// degenerates on the way (eye meeting target, view direction along up).
+    void set_motion(const Vec3& eye_end, const Vec3& target_end);
+    [[nodiscard]] bool moves() const { return end_.has_value(); }
+
     /// Ray through the film position (x, y) in pixels, (0, 0) = top-left corner of the
     /// image, (width, height) = bottom-right; the aspect ratio is width/height. Directions
     /// are unit length. With a lens, `u_lens` picks the point of the aperture the ray leaves
-    /// from (ThinLens::sample_aperture); a pinhole ignores it.
-    [[nodiscard]] Ray generate_ray(float x, float y, int width, int height, Vec2 u_lens = {}) const;
+    /// from (ThinLens::sample_aperture); a pinhole ignores it. The ray carries `time`, and a
+    /// moving camera is where it is then.
+    [[nodiscard]] Ray generate_ray(float x, float y, int width, int height, Vec2 u_lens = {}, float time = 0.0f) const;
     /// Where world point `p` appears on a `width`×`height` film: the (x, y) that
     /// generate_ray() turns into a ray through `p` (for a lens: the ray from the aperture's
-    /// centre); none for a point behind the eye. Used to draw rays over the image.
+    /// centre; a moving camera's place at time 0); none for a point behind the eye. Used to
+    /// draw rays over the image.
     [[nodiscard]] std::optional<Vec2> project(const Vec3& p, int width, int height) const;
 
     [[nodiscard]] Projection projection() const { return projection_; }
@@ -48,11 +71,30 @@ public:
     [[nodiscard]] float vertical_fov() const { return vertical_fov_; }
     [[nodiscard]] float view_height() const { return view_height_; }
 
+    /// Where a moving camera is at time 1.
+    struct EndPose {
+        Vec3 eye, target;
+    };
+    [[nodiscard]] const std::optional<EndPose>& end_pose() const { return end_; }
+    /// Where the camera looks at time 0 and the up vector it was given.
+    [[nodiscard]] const Vec3& target() const { return target_; }
+    [[nodiscard]] const Vec3& up_hint() const { return up_hint_; }
+
 private:
+    /// The eye and the image plane's axes (handout §4.2).
+    struct Basis {
+        Vec3 eye, forward, right, up;
+    };
     Camera(Projection projection, const Vec3& eye, const Vec3& target, const Vec3& up);
+    /// Throws std::invalid_argument for a degenerate view.
+    [[nodiscard]] static Basis make_basis(const Vec3& eye, const Vec3& target, const Vec3& up);
+    [[nodiscard]] Basis basis_at(float time) const;
 
     Projection projection_ = Projection::Perspective;
     Vec3 eye_, forward_, right_, up_;
+    Vec3 target_, up_hint_;
+    std::optional<EndPose> end_;
+    Shutter shutter_;
     float vertical_fov_ = 52.0f;  // degrees
     float view_height_ = 2.0f;
     ThinLens lens_;

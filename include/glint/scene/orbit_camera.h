@@ -48,6 +48,8 @@ private:
     float view_height_ = 2.0f;
     /// The scene camera's lens, kept as it was (its plane of focus does not follow the orbit).
     ThinLens lens_;
+    /// The scene camera's shutter, kept too (the orbit itself does not move over time).
+    Shutter shutter_;
 };
 
 }  // namespace glint

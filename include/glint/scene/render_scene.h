@@ -75,6 +75,9 @@ public:
     /// World bounds of all objects.
     [[nodiscard]] Bounds3 bounds() const { return top_level_.bounds(); }
     [[nodiscard]] SceneStatistics statistics() const;
+    /// Whether camera rays need a time: something moves (Scene::has_motion). A scene where
+    /// nothing moves draws no time sample, so a shutter changes none of its pixels.
+    [[nodiscard]] bool has_motion() const { return has_motion_; }
 
 private:
     /// What a ray query needs of an object, packed for the top-level traversal; the rest
@@ -88,6 +91,8 @@ private:
         bool dielectric = false;
         /// Index into area_lights_ (−1: none).
         int32_t area_light = -1;
+        /// Set for a moving object: object_from_world is then made at each ray's time.
+        const AnimatedTransform* motion = nullptr;
     };
 
     void build_area_lights();
@@ -104,6 +109,7 @@ private:
     std::vector<std::unique_ptr<AreaLight>> area_lights_;
     std::vector<const Light*> all_lights_;
     Bvh top_level_;
+    bool has_motion_ = false;
 };
 
 }  // namespace glint

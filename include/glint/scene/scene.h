@@ -7,6 +7,7 @@
 #include "glint/lights/light.h"
 #include "glint/materials/material.h"
 #include "glint/materials/texture.h"
+#include "glint/math/animated_transform.h"
 #include "glint/math/transform.h"
 #include "glint/scene/background.h"
 #include "glint/scene/camera.h"
@@ -36,16 +37,20 @@ struct Emitter {
 /// One placement of a shape in the world.
 struct SceneObject {
     std::shared_ptr<Shape> shape;
-    /// Identity unless has_transform.
+    /// Identity unless has_transform. For a moving object: its first key's.
     Transform world_from_object;
     bool has_transform = false;
+    /// Set for an object that moves (motion blur): world_from_object over time.
+    std::optional<AnimatedTransform> motion;
     uint32_t material = 0;
     std::string name;
     /// Set for objects that are declared lights; others emit if their material does.
     std::optional<Emitter> emitter;
 
-    /// World bounds, from the shape's object-space bounds.
+    /// World bounds, from the shape's object-space bounds; for a moving object, over all
+    /// its keys' times.
     [[nodiscard]] Bounds3 world_bounds() const {
+        if (motion) return motion->bounds(shape->bounds(), motion->keys().front().time, motion->keys().back().time);
         return has_transform ? world_from_object.bounds(shape->bounds()) : shape->bounds();
     }
 };
@@ -96,6 +101,13 @@ public:
     uint32_t add_object(std::shared_ptr<Shape> shape, uint32_t material,
                         const std::optional<Transform>& world_from_object = std::nullopt, std::string name = {});
     [[nodiscard]] const std::vector<SceneObject>& objects() const { return objects_; }
+    /// Make object `object` move: world_from_object becomes `motion`'s first key. Throws
+    /// std::invalid_argument for an object that lights the scene (emits_light): light
+    /// sampling assumes lights stay put, as pbrt-v4's does. (One made a light afterwards, by
+    /// turning emission_lights on, is seen but never sampled.)
+    void set_motion(uint32_t object, AnimatedTransform motion);
+    /// True if an object moves or the camera does: then camera rays need a time.
+    [[nodiscard]] bool has_motion() const;
     /// Place `shape` as an area light emitting `emitter.radiance` (a black material of its
     /// own absorbs what reaches it). Returns the object's index.
     uint32_t add_area_light(std::shared_ptr<Shape> shape, const Emitter& emitter,

@@ -1,0 +1,127 @@
+// Motion keys: interpolation against the transforms it must give, and motion bounds that
+// hold every placement over the shutter.
+
+#include "glint/math/animated_transform.h"
+#include "glint/scene/camera.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+
+using namespace glint;
+
+namespace {
+
+void expect_same_transform(const Transform& a, const Transform& b, float tolerance) {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            EXPECT_NEAR(a.matrix().m[i][j], b.matrix().m[i][j], tolerance) << "entry " << i << "," << j;
+}
+
+bool contains(const Bounds3& outer, const Bounds3& inner) {
+    return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z &&
+           outer.hi.x >= inner.hi.x && outer.hi.y >= inner.hi.y && outer.hi.z >= inner.hi.z;
+}
+
+}  // namespace
+
+TEST(AnimatedTransform, KeysHoldAtTheirTimesAndBeforeAndAfter) {
+    const Transform a = Transform::translate({1, 2, 3});
+    const Transform b = Transform::rotate(30.0f, {0, 0, 1}) * Transform::scale({2, 2, 2});
+    const AnimatedTransform motion({{0.25f, a}, {0.75f, b}});
+    EXPECT_EQ(motion.at(0.25f), a);
+    EXPECT_EQ(motion.at(0.75f), b);
+    EXPECT_EQ(motion.at(-5.0f), a);
+    EXPECT_EQ(motion.at(9.0f), b);
+}
+
+TEST(AnimatedTransform, TranslationAndScaleAreLerpedRotationSlerped) {
+    // Halfway from no turn to 90° about y is 45°, not the blend of the two matrices (which
+    // would also shrink the object by cos 45°); scale 1 → 3 is 2, and translation halfway.
+    const Transform start = Transform::translate({0, 0, 0});
+    const Transform end =
+        Transform::translate({4, 0, -2}) * Transform::rotate(90.0f, {0, 1, 0}) * Transform::scale({3, 3, 3});
+    const AnimatedTransform motion({{0.0f, start}, {1.0f, end}});
+    const Transform expected =
+        Transform::translate({2, 0, -1}) * Transform::rotate(45.0f, {0, 1, 0}) * Transform::scale({2, 2, 2});
+    expect_same_transform(motion.at(0.5f), expected, 2e-5f);
+    // A quarter of the way along, at constant angular speed: 22.5°.
+    const Transform quarter = Transform::translate({1, 0, -0.5f}) * Transform::rotate(22.5f, {0, 1, 0}) *
+                              Transform::scale({1.5f, 1.5f, 1.5f});
+    expect_same_transform(motion.at(0.25f), quarter, 2e-5f);
+}
+
+TEST(AnimatedTransform, AMirroredKeyKeepsItsMirror) {
+    // A negative scale makes the polar factor a reflection; the decomposition moves the sign
+    // to the stretch so that the rotation stays a rotation and the key comes back.
+    const Transform mirrored = Transform::scale({-1, 1, 1});
+    const Transform turned = Transform::rotate(60.0f, {1, 0, 0}) * mirrored;
+    const AnimatedTransform motion({{0.0f, mirrored}, {1.0f, turned}});
+    expect_same_transform(motion.at(0.5f), Transform::rotate(30.0f, {1, 0, 0}) * mirrored, 2e-5f);
+    EXPECT_TRUE(motion.at(0.5f).swaps_handedness());
+}
+
+TEST(AnimatedTransform, BoundsHoldEveryPlacementOverTheInterval) {
+    // A long box off the axis, half a turn, a translation and a growing scale: the middle
+    // placements reach far outside the boxes at the two ends.
+    const Bounds3 box({1.0f, -0.2f, -0.2f}, {3.0f, 0.2f, 0.2f});
+    const AnimatedTransform motion({{0.0f, Transform()},
+                                    {0.5f, Transform::rotate(90.0f, {0, 1, 0})},
+                                    {1.0f, Transform::translate({0, 1, 0}) * Transform::rotate(179.0f, {0, 1, 0}) *
+                                               Transform::scale({1.5f, 1, 1})}});
+    for (const auto& [t0, t1] : {std::pair{0.0f, 1.0f}, std::pair{0.1f, 0.4f}, std::pair{0.3f, 0.8f}}) {
+        const Bounds3 bounds = motion.bounds(box, t0, t1);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<float> u(t0, t1);
+        for (int i = 0; i < 2000; ++i) {
+            const float t = u(rng);
+            ASSERT_TRUE(contains(bounds, motion.at(t).bounds(box)))
+                << "time " << t << " in [" << t0 << ", " << t1 << "]";
+        }
+        // Not the whole turn's box when the interval is part of it: [0.1, 0.4] stays within
+        // 0° to 72°, so nothing reaches x < 0.
+        if (t1 <= 0.4f) {
+            EXPECT_GT(bounds.lo.x, -0.5f);
+        }
+    }
+}
+
+TEST(AnimatedTransform, AnInstantIsBoundedByItsPlacement) {
+    const Bounds3 box({-1, -1, -1}, {1, 1, 1});
+    const AnimatedTransform motion({{0.0f, Transform()}, {1.0f, Transform::translate({10, 0, 0})}});
+    const Bounds3 b = motion.bounds(box, 0.5f, 0.5f);
+    EXPECT_FLOAT_EQ(b.lo.x, 4.0f);
+    EXPECT_FLOAT_EQ(b.hi.x, 6.0f);
+}
+
+TEST(AnimatedTransform, RefusesKeysOutOfOrderAndASingleKey) {
+    EXPECT_THROW(AnimatedTransform({{0.0f, Transform()}}), std::invalid_argument);
+    EXPECT_THROW(AnimatedTransform({{0.5f, Transform()}, {0.5f, Transform()}}), std::invalid_argument);
+    EXPECT_THROW(AnimatedTransform({{0.0f, Transform()}, {1.0f, Transform()}, {0.5f, Transform()}}),
+                 std::invalid_argument);
+}
+
+TEST(CameraMotion, TheShutterGivesTimesAndRefusesClosingBeforeOpening) {
+    Camera camera;
+    camera.set_shutter({0.25f, 0.75f});
+    EXPECT_FLOAT_EQ(camera.time(0.0f), 0.25f);
+    EXPECT_FLOAT_EQ(camera.time(0.5f), 0.5f);
+    EXPECT_FLOAT_EQ(camera.generate_ray(10, 10, 64, 64, {}, 0.6f).time, 0.6f);
+    EXPECT_THROW(camera.set_shutter({0.5f, 0.25f}), std::invalid_argument);
+}
+
+TEST(CameraMotion, AMovingCameraIsOnItsLineAtEachTime) {
+    Camera camera = Camera::perspective({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40.0f);
+    camera.set_motion({2, 0, 5}, {2, 0, 0});
+    const Ray start = camera.generate_ray(32, 32, 64, 64, {}, 0.0f);
+    const Ray middle = camera.generate_ray(32, 32, 64, 64, {}, 0.5f);
+    const Ray end = camera.generate_ray(32, 32, 64, 64, {}, 1.0f);
+    EXPECT_FLOAT_EQ(start.origin.x, 0.0f);
+    EXPECT_FLOAT_EQ(middle.origin.x, 1.0f);
+    EXPECT_FLOAT_EQ(end.origin.x, 2.0f);
+    EXPECT_NEAR(middle.direction.z, -1.0f, 1e-6f);
+    // The eye passing through the target on the way is refused.
+    Camera through = Camera::perspective({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 40.0f);
+    EXPECT_THROW(through.set_motion({0, 0, -1}, {0, 0, 0}), std::invalid_argument);
+}
