@@ -3,8 +3,8 @@
 
 #include "chi2.h"
 
-#include "glint/materials/optics.h"
 #include "glint/materials/bsdf.h"
+#include "glint/materials/optics.h"
 #include "glint/math/constants.h"
 
 #include <gtest/gtest.h>
@@ -44,10 +44,15 @@ Material lambert(float kd) {
     return m;
 }
 
+/// The Bsdf of `m`, which has no textures: its values are its own at every hit.
+Bsdf bsdf_of(const Material& m, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media) {
+    return Bsdf(m, material_at_hit(m, Vec2(), Vec3()), n, ng, wo, media);
+}
+
 }  // namespace
 
 TEST(BsdfSampling, LambertMatchesItsPdf) {
-    const Bsdf bsdf(lambert(0.8f), Color(1.0f), kUp, kUp, from_polar(30.0f), {});
+    const Bsdf bsdf = bsdf_of(lambert(0.8f), kUp, kUp, from_polar(30.0f), {});
     const Chi2Result r = bsdf_chi2(bsdf);
     EXPECT_TRUE(r.passed) << r.report;
 }
@@ -59,7 +64,7 @@ TEST(BsdfSampling, BlinnPhongLobeMatchesItsPdfAtSeveralExponentsAndAngles) {
             m.diffuse = Color(0.0f);
             m.specular = Color(0.5f);
             m.shininess = shininess;
-            const Bsdf bsdf(m, Color(1.0f), kUp, kUp, from_polar(theta), {});
+            const Bsdf bsdf = bsdf_of(m, kUp, kUp, from_polar(theta), {});
             const Chi2Result r = bsdf_chi2(bsdf, 6);  // six tests: Šidák-corrected level
             EXPECT_TRUE(r.passed) << "s = " << shininess << ", θo = " << theta << "\n" << r.report;
         }
@@ -72,14 +77,14 @@ TEST(BsdfSampling, MixtureOfLambertHighlightAndMirrorMatchesItsPdf) {
     m.specular = Color(0.3f);
     m.shininess = 20.0f;
     m.reflectivity = Color(0.3f);  // a delta lobe: its samples are rejected from the smooth histogram
-    const Bsdf bsdf(m, Color(1.0f), kUp, kUp, from_polar(50.0f), {});
+    const Bsdf bsdf = bsdf_of(m, kUp, kUp, from_polar(50.0f), {});
     const Chi2Result r = bsdf_chi2(bsdf);
     EXPECT_TRUE(r.passed) << r.report;
 }
 
 TEST(BsdfSampling, WhiteLambertReflectsEverything) {
     // Weight f·cosθ/pdf is exactly kd for cosine sampling: a furnace in one line.
-    const Bsdf bsdf(lambert(1.0f), Color(1.0f), kUp, kUp, from_polar(10.0f), {});
+    const Bsdf bsdf = bsdf_of(lambert(1.0f), kUp, kUp, from_polar(10.0f), {});
     for (float u : {0.1f, 0.5f, 0.9f}) {
         const auto s = bsdf.sample(0.5f, Vec2(u, 1.0f - u));
         ASSERT_TRUE(s);
@@ -91,7 +96,7 @@ TEST(BsdfSampling, NothingUnderTheTrueSurface) {
     // Shading normal tilted 30° away from the geometric one: directions under the true
     // surface are neither evaluated nor sampled.
     const Vec3 n = from_polar(30.0f);
-    const Bsdf bsdf(lambert(1.0f), Color(1.0f), n, kUp, kUp, {});
+    const Bsdf bsdf = bsdf_of(lambert(1.0f), n, kUp, kUp, {});
     const Vec3 below = normalize(Vec3(1.0f, 0.0f, -0.2f));
     ASSERT_GT(dot(n, below), 0.0f);
     EXPECT_TRUE(bsdf.eval(below).is_black());
@@ -104,7 +109,7 @@ TEST(BsdfDelta, GlassSplitsBySchlickAndScalesTransmittedRadianceByEtaSquared) {
     glass.transparency = 1.0f;
     glass.ior = 1.5f;
     const Vec3 wo = from_polar(40.0f);
-    const Bsdf bsdf(glass, Color(1.0f), kUp, kUp, wo, {1.0f, 1.5f});
+    const Bsdf bsdf = bsdf_of(glass, kUp, kUp, wo, {1.0f, 1.5f});
     const float f = fresnel_schlick(-wo, kUp, 1.0f, 1.5f);
     EXPECT_NEAR(bsdf.specular().reflection.r, f, 1e-6f);
     EXPECT_NEAR(bsdf.specular().transmission, 1.0f - f, 1e-6f);
@@ -124,7 +129,7 @@ TEST(BsdfDelta, TotalInternalReflectionReflectsAll) {
     glass.transparency = 1.0f;
     glass.ior = 1.5f;
     // Inside the glass at 60° (critical angle 41.8°).
-    const Bsdf bsdf(glass, Color(1.0f), kUp, kUp, from_polar(60.0f), {1.5f, 1.0f});
+    const Bsdf bsdf = bsdf_of(glass, kUp, kUp, from_polar(60.0f), {1.5f, 1.0f});
     EXPECT_FALSE(bsdf.specular().refracted);
     EXPECT_EQ(bsdf.specular().transmission, 0.0f);
     EXPECT_NEAR(bsdf.specular().reflection.r, 1.0f, 1e-6f);

@@ -65,6 +65,11 @@ Material rough_glass(float roughness, float ior = 1.5f) {
     return m;
 }
 
+/// The Bsdf of `m`, which has no textures: its values are its own at every hit.
+Bsdf bsdf_of(const Material& m, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media) {
+    return Bsdf(m, material_at_hit(m, Vec2(), Vec3()), n, ng, wo, media);
+}
+
 /// chi-square of Bsdf::sample (or sample_glossy) against pdf (glossy_pdf) over the whole
 /// sphere; u_lobe from its own stream, as an integrator draws it.
 Chi2Result bsdf_chi2(const Bsdf& bsdf, bool glossy_only, uint64_t seed) {
@@ -163,8 +168,8 @@ TEST(MicrofacetChi2, VisibleNormalSamplesFollowTheirDensity) {
 TEST(MicrofacetChi2, GlossyConductorSamplesFollowThePdf) {
     for (const float roughness : {0.3f, 0.7f}) {
         for (const float theta : {20.0f, 70.0f}) {
-            const Bsdf bsdf(rough_metal(roughness, Color(0.9f, 0.6f, 0.3f), true), Color(1.0f), kUp, kUp,
-                            from_polar(theta), {});
+            const Bsdf bsdf =
+                bsdf_of(rough_metal(roughness, Color(0.9f, 0.6f, 0.3f), true), kUp, kUp, from_polar(theta), {});
             ASSERT_TRUE(bsdf.has_glossy_lobes());
             const Chi2Result r = bsdf_chi2(bsdf, false, 21);
             EXPECT_TRUE(r.passed) << "roughness " << roughness << ", θo = " << theta << "\n" << r.report;
@@ -173,7 +178,7 @@ TEST(MicrofacetChi2, GlossyConductorSamplesFollowThePdf) {
     // Mixed with a Lambert lobe: the one-sample mixture, and the glossy lobe alone.
     Material m = rough_metal(0.4f, Color(0.5f), true);
     m.diffuse = Color(0.4f);
-    const Bsdf mixed(m, Color(1.0f), kUp, kUp, from_polar(45.0f), {});
+    const Bsdf mixed = bsdf_of(m, kUp, kUp, from_polar(45.0f), {});
     for (const bool glossy_only : {false, true}) {
         const Chi2Result r = bsdf_chi2(mixed, glossy_only, 22);
         EXPECT_TRUE(r.passed) << (glossy_only ? "glossy lobe alone" : "mixture") << "\n" << r.report;
@@ -193,7 +198,7 @@ TEST(MicrofacetChi2, RoughDielectricSamplesFollowThePdfEnteringAndLeaving) {
                  {0.3f, 30.0f, {1.5f, 1.0f}},
                  {0.3f, 60.0f, {1.5f, 1.0f}}};
     for (const auto& [roughness, theta, media] : cases) {
-        const Bsdf bsdf(rough_glass(roughness), Color(1.0f), kUp, kUp, from_polar(theta, 10.0f), media);
+        const Bsdf bsdf = bsdf_of(rough_glass(roughness), kUp, kUp, from_polar(theta, 10.0f), media);
         const Chi2Result r = bsdf_chi2(bsdf, false, 31);
         EXPECT_TRUE(r.passed) << "roughness " << roughness << ", η " << media.eta_from << " → " << media.eta_to
                               << ", θo = " << theta << "\n"
@@ -212,7 +217,7 @@ TEST(GlossyLobes, SampleWeightIsEvalTimesCosineOverPdf) {
     const Vec3 wo = from_polar(35.0f, 60.0f);
     int checked = 0, transmitted = 0;
     for (const Interface media : {Interface{1.0f, 1.5f}, Interface{1.5f, 1.0f}}) {
-        const Bsdf bsdf(mixed, Color(1.0f), kUp, kUp, wo, media);
+        const Bsdf bsdf = bsdf_of(mixed, kUp, kUp, wo, media);
         for (int i = 0; i < 32; ++i)
             for (int j = 0; j < 32; ++j) {
                 const Vec2 u((i + 0.5f) / 32.0f, (j + 0.5f) / 32.0f);
@@ -246,7 +251,7 @@ TEST(GlossyFurnace, WhiteRoughConductorReflectsAtMostEverything) {
     constexpr int kSamples = 100'000;
     for (const float roughness : {0.05f, 0.2f, 0.5f, 1.0f}) {
         for (const float theta : {0.0f, 30.0f, 60.0f, 80.0f, 89.0f}) {
-            const Bsdf bsdf(rough_metal(roughness), Color(1.0f), kUp, kUp, from_polar(theta), {});
+            const Bsdf bsdf = bsdf_of(rough_metal(roughness), kUp, kUp, from_polar(theta), {});
             const Estimate e = sampled_albedo(bsdf, kSamples);
             EXPECT_LE(e.mean, 1.0 + 4.0 * e.stderr_ + 1e-6) << "roughness " << roughness << ", θo = " << theta;
             if (roughness <= 0.05f && theta <= 60.0f) {
@@ -262,8 +267,8 @@ TEST(GlossyFurnace, SampledAlbedoAgreesWithUniformIntegrationOfEval) {
     // sphere, so that a pdf and an eval that agree with each other but not with the BRDF's
     // normalisation cannot pass. Rough enough that uniform sampling sees the lobe.
     constexpr int kSamples = 200'000;
-    const Bsdf metal(rough_metal(0.7f), Color(1.0f), kUp, kUp, from_polar(40.0f), {});
-    const Bsdf glass(rough_glass(0.7f), Color(1.0f), kUp, kUp, from_polar(40.0f), {1.0f, 1.5f});
+    const Bsdf metal = bsdf_of(rough_metal(0.7f), kUp, kUp, from_polar(40.0f), {});
+    const Bsdf glass = bsdf_of(rough_glass(0.7f), kUp, kUp, from_polar(40.0f), {1.0f, 1.5f});
     for (const Bsdf* bsdf : {&metal, &glass}) {
         pcg32 rng(17);
         double sum = 0.0, sum2 = 0.0;
@@ -289,7 +294,7 @@ TEST(GlossyFurnace, RoughDielectricReflectsAndTransmitsAtMostEverything) {
         for (const Interface media : {Interface{1.0f, 1.5f}, Interface{1.5f, 1.0f}}) {
             const float eta = media.eta_to / media.eta_from;
             for (const float theta : {0.0f, 30.0f, 60.0f, 85.0f}) {
-                const Bsdf bsdf(rough_glass(roughness), Color(1.0f), kUp, kUp, from_polar(theta), media);
+                const Bsdf bsdf = bsdf_of(rough_glass(roughness), kUp, kUp, from_polar(theta), media);
                 const Estimate e = sampled_albedo(bsdf, kSamples, eta * eta);
                 EXPECT_LE(e.mean, 1.0 + 4.0 * e.stderr_ + 1e-6)
                     << "roughness " << roughness << ", η = " << eta << ", θo = " << theta;
@@ -314,7 +319,7 @@ TEST(GlossyLobes, RoughnessZeroIsTheDeltaMirrorAndGlass) {
     m.ior = 1.5f;
     m.roughness = 0.0f;
     const Vec3 wo = from_polar(50.0f);
-    const Bsdf bsdf(m, Color(1.0f), kUp, kUp, wo, {1.0f, 1.5f});
+    const Bsdf bsdf = bsdf_of(m, kUp, kUp, wo, {1.0f, 1.5f});
     EXPECT_FALSE(bsdf.has_glossy_lobes());
     EXPECT_FALSE(bsdf.has_smooth_lobes());
     const float c5 = std::pow(1.0f - std::cos(radians(50.0f)), 5.0f);
@@ -344,8 +349,8 @@ TEST(GlossyLobes, SmallRoughnessApproachesTheDeltas) {
     // and leaving: the microfacet code uses the delta code's conventions.
     for (const Interface media : {Interface{1.0f, 1.5f}, Interface{1.5f, 1.0f}}) {
         const Vec3 wo = from_polar(30.0f, 45.0f);
-        const Bsdf rough(rough_glass(0.02f), Color(1.0f), kUp, kUp, wo, media);
-        const Bsdf smooth(rough_glass(0.0f), Color(1.0f), kUp, kUp, wo, media);
+        const Bsdf rough = bsdf_of(rough_glass(0.02f), kUp, kUp, wo, media);
+        const Bsdf smooth = bsdf_of(rough_glass(0.0f), kUp, kUp, wo, media);
         ASSERT_TRUE(smooth.specular().refracted);
         constexpr int kSamples = 20'000;
         pcg32 rng(5);
@@ -371,14 +376,14 @@ TEST(GlossyLobes, SmallRoughnessApproachesTheDeltas) {
 TEST(GlossyLobes, EqualIndicesKeepTheDeltaPassThrough) {
     // A dielectric of the surrounding index does not bend rays at any roughness (glTF's
     // BLEND layer): it stays the delta, rather than a lobe whose half-vector is undefined.
-    const Bsdf bsdf(rough_glass(0.5f, 1.0f), Color(1.0f), kUp, kUp, from_polar(30.0f), {1.0f, 1.0f});
+    const Bsdf bsdf = bsdf_of(rough_glass(0.5f, 1.0f), kUp, kUp, from_polar(30.0f), {1.0f, 1.0f});
     EXPECT_FALSE(bsdf.has_glossy_lobes());
     ASSERT_TRUE(bsdf.specular().refracted);
     EXPECT_NEAR(dot(*bsdf.specular().refracted, -from_polar(30.0f)), 1.0f, 1e-6f);
 }
 
 TEST(GlossyLobes, TransmissionLiesUnderBothNormalsOnly) {
-    const Bsdf glass(rough_glass(0.4f), Color(1.0f), kUp, kUp, from_polar(20.0f), {1.0f, 1.5f});
+    const Bsdf glass = bsdf_of(rough_glass(0.4f), kUp, kUp, from_polar(20.0f), {1.0f, 1.5f});
     const Vec3 down = from_polar(170.0f, 180.0f);
     EXPECT_TRUE(glass.may_reflect(down));
     EXPECT_GT(glass.eval(down).r, 0.0f);
@@ -386,7 +391,7 @@ TEST(GlossyLobes, TransmissionLiesUnderBothNormalsOnly) {
     // A shading normal tilted 30° from the geometric one: a direction under the shading
     // normal but above the true surface (and the reverse) takes no lobe at all.
     const Vec3 n = from_polar(30.0f);
-    const Bsdf tilted(rough_glass(0.4f), Color(1.0f), n, kUp, kUp, {1.0f, 1.5f});
+    const Bsdf tilted = bsdf_of(rough_glass(0.4f), n, kUp, kUp, {1.0f, 1.5f});
     const Vec3 between = normalize(Vec3(-1.0f, 0.0f, 0.3f));
     ASSERT_LT(dot(n, between), 0.0f);
     ASSERT_GT(dot(kUp, between), 0.0f);
@@ -398,8 +403,8 @@ TEST(GlossyLobes, TransmissionLiesUnderBothNormalsOnly) {
     const Vec3 under = normalize(Vec3(1.0f, 0.0f, -0.3f));
     ASSERT_GT(dot(n, under), 0.0f);
     ASSERT_LT(dot(kUp, under), 0.0f);
-    const Bsdf tilted_metal(rough_metal(0.6f), Color(1.0f), n, kUp, kUp, {});
-    const Bsdf untilted_metal(rough_metal(0.6f), Color(1.0f), n, n, kUp, {});  // the same lobe, true normal n
+    const Bsdf tilted_metal = bsdf_of(rough_metal(0.6f), n, kUp, kUp, {});
+    const Bsdf untilted_metal = bsdf_of(rough_metal(0.6f), n, n, kUp, {});  // the same lobe, true normal n
     ASSERT_GT(untilted_metal.eval(under).r, 0.0f);
     ASSERT_GT(untilted_metal.pdf(under), 0.0f);
     for (const Bsdf* bsdf : {&tilted, &tilted_metal}) {
@@ -410,7 +415,7 @@ TEST(GlossyLobes, TransmissionLiesUnderBothNormalsOnly) {
         EXPECT_EQ(bsdf->glossy_pdf(under), 0.0f);
     }
     // An opaque rough metal never scatters under the surface.
-    const Bsdf metal(rough_metal(0.4f), Color(1.0f), kUp, kUp, from_polar(20.0f), {});
+    const Bsdf metal = bsdf_of(rough_metal(0.4f), kUp, kUp, from_polar(20.0f), {});
     EXPECT_FALSE(metal.may_reflect(down));
     EXPECT_TRUE(metal.eval(down).is_black());
 }

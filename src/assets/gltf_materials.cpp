@@ -1,6 +1,7 @@
 #include "gltf_materials.h"
 
 #include "glint/image/image_io.h"
+#include "glint/materials/metallic_roughness.h"
 
 #include "glint/diagnostics.h"
 
@@ -42,37 +43,37 @@ const MaterialInfo& MaterialConverter::material(int index) {
     return it->second;
 }
 
-std::shared_ptr<const Image> MaterialConverter::image(int index) {
-    auto it = images_.find(index);
+std::shared_ptr<const Image> MaterialConverter::image(int index, ColorEncoding encoding) {
+    auto it = images_.find({index, encoding});
     if (it != images_.end()) return it->second;
     std::shared_ptr<const Image> result;
     std::string name;
     try {
         const std::vector<unsigned char> bytes = image_bytes(doc_, index, name);
-        result = std::make_shared<const Image>(decode_image(bytes, name));
+        result = std::make_shared<const Image>(decode_image(bytes, name, encoding));
     } catch (const std::exception& e) {
         // A missing or broken texture costs the material its texture, not the render.
         notes_.ignored("texture image " + std::to_string(index) + " could not be read: " + json_error_text(e), "");
     }
-    images_[index] = result;
+    images_[{index, encoding}] = result;
     return result;
 }
 
 const Texture* MaterialConverter::texture(const nlohmann::json& info, const std::string& material_name,
-                                          const char* slot) {
+                                          const char* slot, ColorEncoding encoding) {
     if (!info.is_object() || !info.contains("index")) return nullptr;
     if (integer_or<int>(info, "texCoord", 0) != 0)
         notes_.ignored(std::string("texCoord set other than 0 (") + slot + "): set 0 used", material_name);
     if (info.contains("extensions") && info.at("extensions").contains("KHR_texture_transform"))
         notes_.ignored("KHR_texture_transform (texture offset/scale/rotation)", material_name);
     const int t = integer<int>(info.at("index"));
-    auto it = textures_.find(t);
+    auto it = textures_.find({t, encoding});
     if (it != textures_.end()) return it->second;
     const Texture* result = nullptr;
     if (t >= 0 && std::size_t(t) < array_size(doc_.json, "textures")) {
         const auto& tex = doc_.json.at("textures").at(std::size_t(t));
         if (tex.contains("source")) {
-            if (auto img = image(integer<int>(tex.at("source")))) {
+            if (auto img = image(integer<int>(tex.at("source")), encoding)) {
                 WrapMode wrap = WrapMode::Repeat;
                 if (tex.contains("sampler") &&
                     integer<std::size_t>(tex.at("sampler")) < array_size(doc_.json, "samplers")) {
@@ -86,7 +87,7 @@ const Texture* MaterialConverter::texture(const nlohmann::json& info, const std:
             notes_.ignored("texture without a PNG/JPEG source (e.g. KHR_texture_basisu only)", material_name);
         }
     }
-    textures_[t] = result;
+    textures_[{t, encoding}] = result;
     return result;
 }
 
@@ -106,30 +107,39 @@ MaterialInfo MaterialConverter::convert(int index) {
     }
     const float metallic = std::clamp(pbr.value("metallicFactor", 1.0f), 0.0f, 1.0f);
     const float roughness = std::clamp(pbr.value("roughnessFactor", 1.0f), 0.0f, 1.0f);
-    const Texture* base_texture = texture(pbr.value("baseColorTexture", nlohmann::json()), name, "baseColorTexture");
+    const Texture* base_texture =
+        texture(pbr.value("baseColorTexture", nlohmann::json()), name, "baseColorTexture", ColorEncoding::Color);
 
-    // Metallic-roughness on Glint's lobes (glTF 2.0, Appendix B): one GGX lobe of the file's
-    // roughness (alpha = roughness², as glTF defines it) whose Schlick F0 is the base colour
-    // for metal and 0.04 for the dielectric part, F0 = mix(0.04, base, metallic); the
-    // dielectric part's diffuse is base·(1 − metallic). Roughness 0 is a mirror.
-    m.diffuse = base * (1.0f - metallic);
+    // Metallic-roughness on Glint's lobes (glTF 2.0, Appendix B; materials/metallic_roughness.h):
+    // one GGX lobe of the file's roughness (alpha = roughness², as glTF defines it) with Schlick
+    // F0 = mix(0.04, base, metallic), beside the diffuse base·(1 − metallic). Roughness 0 is a mirror.
+    const MetallicRoughnessLobes lobes = metallic_roughness_lobes(base, metallic);
+    m.diffuse = lobes.diffuse;
     m.ambient = m.diffuse;
     m.texture = base_texture;
-    m.reflectivity = lerp(metallic, Color(0.04f), base);
+    m.reflectivity = lobes.reflectivity;
     m.fresnel_mirror = true;
     m.roughness = roughness;
-    if (pbr.contains("metallicRoughnessTexture")) notes_.ignored("metallicRoughnessTexture (factors used)", name);
+    // A metallicRoughnessTexture makes metalness and roughness vary over the surface (§3.9.2).
+    // Its values "MUST be encoded with a linear transfer function" (material.pbrMetallicRoughness
+    // schema), so its image is read as data; they multiply the factors at each hit
+    // (materials/material_at_hit.h), so the material keeps them.
+    m.metallic_roughness_texture = texture(pbr.value("metallicRoughnessTexture", nlohmann::json()), name,
+                                           "metallicRoughnessTexture", ColorEncoding::Data);
+    m.base_color = base;
+    m.metallic = metallic;
 
     // Emission: factor × KHR_materials_emissive_strength × texture, as radiance.
     const float strength = extension(j, "KHR_materials_emissive_strength").value("emissiveStrength", 1.0f);
     m.emission = color3(j, "emissiveFactor", Color(0.0f)) * strength;
     if (j.contains("emissiveTexture")) {
-        m.emission_texture = texture(j.at("emissiveTexture"), name, "emissiveTexture");
+        m.emission_texture = texture(j.at("emissiveTexture"), name, "emissiveTexture", ColorEncoding::Color);
         if (m.emission.is_black() && m.emission_texture) m.emission_texture = nullptr;  // factor 0 turns it off
     }
 
     // KHR_materials_transmission + KHR_materials_ior: a dielectric, rough with the same
-    // roughness (the extension's transmission lobe shares the specular lobe's roughness).
+    // roughness (the extension's transmission lobe shares the specular lobe's roughness, the
+    // metallic-roughness texture's included: the Bsdf takes both from material_at_hit).
     const auto& transmission = extension(j, "KHR_materials_transmission");
     m.transparency = std::clamp(transmission.value("transmissionFactor", 0.0f), 0.0f, 1.0f);
     if (transmission.contains("transmissionTexture")) notes_.ignored("transmissionTexture (factor used)", name);

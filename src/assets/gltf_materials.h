@@ -4,12 +4,14 @@
 #include "gltf_document.h"
 #include "import_notes.h"
 
+#include "glint/image/image_io.h"
 #include "glint/scene/scene.h"
 
 #include <algorithm>
 #include <map>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace glint::gltf {
@@ -28,7 +30,8 @@ struct MaterialInfo {
 
 class MaterialConverter {
 public:
-    MaterialConverter(const Document& doc, Scene& scene, ImportNotes& notes) : doc_(doc), scene_(scene), notes_(notes) {}
+    MaterialConverter(const Document& doc, Scene& scene, ImportNotes& notes)
+        : doc_(doc), scene_(scene), notes_(notes) {}
 
     /// Convert every material of the file into the scene, in file order.
     void convert_all();
@@ -42,17 +45,21 @@ public:
 
 private:
     MaterialInfo convert(int index);
-    /// Texture `info` ({"index", "texCoord"}) as a scene texture; null (with a warning) when
-    /// it cannot be decoded.
-    const Texture* texture(const nlohmann::json& info, const std::string& material_name, const char* slot);
-    std::shared_ptr<const Image> image(int index);
+    /// Texture `info` ({"index", "texCoord"}) as a scene texture, its image decoded with
+    /// `encoding` (sRGB colour, or linear data such as metalness and roughness); null (with a
+    /// warning) when it cannot be decoded.
+    const Texture* texture(const nlohmann::json& info, const std::string& material_name, const char* slot,
+                           ColorEncoding encoding);
+    std::shared_ptr<const Image> image(int index, ColorEncoding encoding);
 
     const Document& doc_;
     Scene& scene_;
     ImportNotes& notes_;
     std::map<int, MaterialInfo> converted_;
-    std::map<int, const Texture*> textures_;
-    std::map<int, std::shared_ptr<const Image>> images_;
+    /// By glTF index and encoding: one image may be both colour and data (a packed texture
+    /// used as base colour by one material and as metallic-roughness by another).
+    std::map<std::pair<int, ColorEncoding>, const Texture*> textures_;
+    std::map<std::pair<int, ColorEncoding>, std::shared_ptr<const Image>> images_;
 };
 
 }  // namespace glint::gltf

@@ -12,7 +12,7 @@ namespace {
 // A field added to Material must be handed over too (or be a texture, which the parent
 // makes from material_images): this fails to compile until write_material/read_material
 // have been looked at.
-static_assert(sizeof(Material) == 144, "Material changed: update write_material and read_material");
+static_assert(sizeof(Material) == 168, "Material changed: update write_material and read_material");
 
 void write_material(ByteWriter& w, const Material& m) {
     w.text(m.name);
@@ -27,6 +27,8 @@ void write_material(ByteWriter& w, const Material& m) {
     w.value(m.emission);
     w.value(m.alpha_cutoff);
     w.value(m.roughness);
+    w.value(m.base_color);
+    w.value(m.metallic);
 }
 
 Material read_material(ByteReader& r) {
@@ -43,6 +45,8 @@ Material read_material(ByteReader& r) {
     m.emission = r.value<Color>();
     m.alpha_cutoff = r.value<float>();
     m.roughness = r.value<float>();
+    m.base_color = r.value<Color>();
+    m.metallic = r.value<float>();
     return m;
 }
 

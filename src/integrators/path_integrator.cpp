@@ -73,7 +73,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         const ShadingPoint sp = shading_point(si, m, ray, media);
         if (context.tree) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], sp.n);
         if (depth == 0 && context.first_hit)
-            record_first_hit(*context.first_hit, camera_ray, si, sp, m, diffuse_texture(m, si));
+            record_first_hit(*context.first_hit, camera_ray, si, sp, m, material_at_hit(m, si.uv, si.p));
 
         const Color le = scene.emitted(hit.object, m, si, sp.wo);
         if (!le.is_black()) {
@@ -86,7 +86,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         }
         if (depth >= max_depth_) break;
 
-        const Bsdf bsdf(m, diffuse_texture(m, si), sp.n, sp.ng, sp.wo, sp.media);
+        const Bsdf bsdf(m, material_at_hit(m, si.uv, si.p), sp.n, sp.ng, sp.wo, sp.media);
 
         // Next-event estimation: one light, chosen uniformly.
         const float u_light = sampler.next_1d();

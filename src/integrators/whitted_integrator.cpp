@@ -178,12 +178,12 @@ template <bool Record>
 Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
                                const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const {
     const ShadingPoint sp = shading_point(si, m, ray, media);
-    const Color texture = diffuse_texture(m, si);
-    const Bsdf bsdf(m, texture, sp.n, sp.ng, sp.wo, sp.media);
+    const MaterialAtHit at = material_at_hit(m, si.uv, si.p);
+    const Bsdf bsdf(m, at, sp.n, sp.ng, sp.wo, sp.media);
     // The ray being shaded (context.node changes as the children are traced).
     const int32_t node = Record ? context.node : -1;
     if constexpr (Record) context.tree->set_normal(node, sp.n);
-    if (depth == 0 && context.first_hit) record_first_hit(*context.first_hit, ray, si, sp, m, texture);
+    if (depth == 0 && context.first_hit) record_first_hit(*context.first_hit, ray, si, sp, m, at);
 
     Color radiance = scene.emitted(object, m, si, sp.wo);
     // Emission that a glossy sample found on an area light shares the light's samples' MIS.
@@ -192,7 +192,7 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     const float t = std::clamp(m.transparency, 0.0f, 1.0f);
     if (t < 1.0f) {
         // Whitted's ambient term: ka·La, textured like the diffuse term; no BSDF lobe.
-        radiance += texture * m.ambient * scene.ambient_light() * (1.0f - t);
+        radiance += at.ambient * scene.ambient_light() * (1.0f - t);
         if constexpr (Record) context.tree->add_radiance(node, radiance);
     } else if constexpr (Record) {
         context.tree->add_radiance(node, radiance);

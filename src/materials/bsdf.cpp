@@ -24,18 +24,18 @@ Vec3 around_normal(const Vec3& local, const Vec3& n) {
 
 }  // namespace
 
-void Bsdf::add_glossy_lobes(const Material& m, float t, Interface media) {
-    const bool conductor = t < 1.0f && !m.reflectivity.is_black();
+void Bsdf::add_glossy_lobes(const MaterialAtHit& at, bool fresnel_mirror, float t, Interface media) {
+    const bool conductor = t < 1.0f && !at.reflectivity.is_black();
     // Equal indices stay with the delta glass (the constructor): refraction does not bend.
     const bool dielectric = t > 0.0f && media.eta_from != media.eta_to;
     if (!conductor && !dielectric) return;
-    const float alpha = roughness_to_alpha(m.roughness);
+    const float alpha = roughness_to_alpha(at.roughness);
     const TrowbridgeReitz ggx(alpha, alpha);
     GlossyLobes& g = glossy_.emplace();
     orthonormal_basis(n_, g.b1, g.b2);
     g.wo_local = to_local(wo_);
     if (conductor) {
-        g.conductor = GlossyConductor(ggx, m.reflectivity, m.fresnel_mirror);
+        g.conductor = GlossyConductor(ggx, at.reflectivity, fresnel_mirror);
         g.conductor_scale = 1.0f - t;
     }
     if (dielectric) {

@@ -29,6 +29,8 @@ Material blend(const Material& a, const Material& b, const Material& c, float wa
     m.ior = mix(&Material::ior);
     m.emission = mix(&Material::emission);
     m.roughness = mix(&Material::roughness);
+    m.base_color = mix(&Material::base_color);
+    m.metallic = mix(&Material::metallic);
     return m;
 }
 

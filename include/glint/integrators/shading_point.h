@@ -9,6 +9,7 @@
 #include "glint/lights/light.h"
 #include "glint/materials/bsdf.h"
 #include "glint/materials/material.h"
+#include "glint/materials/material_at_hit.h"
 #include "glint/math/offset_ray.h"
 #include "glint/math/ray.h"
 
@@ -60,22 +61,13 @@ struct ShadingPoint {
     return sp;
 }
 
-/// Texture colour multiplying kd at the hit (white without a texture, or for a fully
-/// transparent material, whose diffuse and ambient terms have weight 0). Inline: it runs
-/// at every hit.
-[[nodiscard]] inline Color diffuse_texture(const Material& m, const SurfaceInteraction& si) {
-    // A fully transparent material has no diffuse lobe for the texture to tint: skip the lookup.
-    if (!m.texture || m.transparency >= 1.0f) return Color(1.0f);
-    return m.texture->evaluate(si.uv, si.p);
-}
-
 /// What the AOVs take from the camera ray's hit (image/aov.h): the diffuse albedo
-/// kd·texture·(1 − t), the shading normal towards the camera, the position and the distance
-/// along the camera ray.
+/// kd·texture·(1 − t) (`at` = material_at_hit of `m` there), the shading normal towards the
+/// camera, the position and the distance along the camera ray.
 inline void record_first_hit(FirstHit& out, const Ray& camera_ray, const SurfaceInteraction& si, const ShadingPoint& sp,
-                             const Material& m, const Color& texture) {
+                             const Material& m, const MaterialAtHit& at) {
     out.hit = true;
-    out.albedo = m.diffuse * texture * (1.0f - std::clamp(m.transparency, 0.0f, 1.0f));
+    out.albedo = at.diffuse * (1.0f - std::clamp(m.transparency, 0.0f, 1.0f));
     out.normal = sp.n;
     out.position = si.p;
     out.distance = length(si.p - camera_ray.origin);

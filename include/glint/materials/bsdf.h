@@ -1,9 +1,10 @@
 #pragma once
 /// \file The scattering function of a material at one hit (the seam every integrator uses).
 ///
-/// A `Bsdf` is built from a `Material` where a ray hit it, with the shading normal turned
-/// towards the viewer (surfaces are two-sided). It holds the material's lobes, each with the
-/// weight the Whitted material equation gives it (docs/shading.md):
+/// A `Bsdf` is built from a `Material` and its values where a ray hit it (MaterialAtHit: kd,
+/// kr and the roughness after textures), with the shading normal turned towards the viewer
+/// (surfaces are two-sided). It holds the material's lobes, each with the weight the Whitted
+/// material equation gives it (docs/shading.md):
 ///
 ///   smooth lobes   Lambert            f = (1−t)·kd·tex / π
 ///                  Blinn-Phong        f = (1−t)·ks·(N·H)^s / π   (the seminar's highlight)
@@ -24,6 +25,7 @@
 /// to under the surface; every other lobe is zero there.
 
 #include "glint/materials/material.h"
+#include "glint/materials/material_at_hit.h"
 #include "glint/materials/microfacet_lobes.h"
 #include "glint/materials/optics.h"
 #include "glint/math/color.h"
@@ -91,26 +93,27 @@ struct GlossyLobes {
 
 class Bsdf {
 public:
-    /// `texture` multiplies kd (white for none). `n` is the unit shading normal and `ng` the
-    /// unit geometric normal, both on the viewer's side; `wo` the unit direction to the viewer.
+    /// `at` holds kd, kr and the roughness at the hit (material_at_hit(m, ...)); the other
+    /// parameters come from `m`. `n` is the unit shading normal and `ng` the unit geometric
+    /// normal, both on the viewer's side; `wo` the unit direction to the viewer.
     /// Inline: built at every hit.
-    Bsdf(const Material& m, const Color& texture, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media)
+    Bsdf(const Material& m, const MaterialAtHit& at, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media)
         : n_(n), ng_(ng), wo_(wo) {
         const float t = std::clamp(m.transparency, 0.0f, 1.0f);
-        diffuse_ = m.diffuse * texture * (1.0f - t);
+        diffuse_ = at.diffuse * (1.0f - t);
         highlight_ = m.specular * (1.0f - t);
         shininess_ = m.shininess;
 
-        const bool rough = m.roughness > 0.0f;
+        const bool rough = at.roughness > 0.0f;
         const Vec3 d = -wo;
         specular_.reflected = reflect(d, n);
         if (!rough) {
-            Color mirror = m.reflectivity;
+            Color mirror = at.reflectivity;
             if (m.fresnel_mirror) {
                 // Schlick with a coloured F0 (metals): F = F0 + (1 − F0)(1 − cos θ)^5.
                 const float c = 1.0f - std::clamp(dot(n, wo), 0.0f, 1.0f);
                 const float c5 = c * c * c * c * c;
-                mirror = m.reflectivity + (Color(1.0f) - m.reflectivity) * c5;
+                mirror = at.reflectivity + (Color(1.0f) - at.reflectivity) * c5;
             }
             specular_.reflection = mirror * (1.0f - t);
         }
@@ -122,7 +125,7 @@ public:
             specular_.reflection += Color(t * fresnel);
             specular_.transmission = t * (1.0f - fresnel);
         }
-        if (rough) add_glossy_lobes(m, t, media);
+        if (rough) add_glossy_lobes(at, m.fresnel_mirror, t, media);
     }
 
     /// False where eval(wi) is certainly zero: wi on neither side a lobe scatters to (above
@@ -184,7 +187,7 @@ private:
         float diffuse = 0.0f, highlight = 0.0f, conductor = 0.0f, dielectric = 0.0f, reflect = 0.0f, transmit = 0.0f;
     };
     /// The glossy lobes of a rough material (out of line: only rough materials pay for them).
-    void add_glossy_lobes(const Material& m, float t, Interface media);
+    void add_glossy_lobes(const MaterialAtHit& at, bool fresnel_mirror, float t, Interface media);
     [[nodiscard]] LobeChoice lobe_choice() const;
     /// The conductor and dielectric alone, in proportion to their weights.
     [[nodiscard]] LobeChoice glossy_choice() const;

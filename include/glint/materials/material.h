@@ -50,6 +50,16 @@ struct Material {
     /// reflection and refraction). Above 0 they become GGX lobes of alpha = roughness²
     /// (glossy metal, frosted glass; materials/microfacet.h).
     float roughness = 0.0f;
+    /// glTF's metallicRoughnessTexture (glTF 2.0, §3.9.2); null for none. With one, kd, ka, kr
+    /// and the roughness vary over the surface (materials/material_at_hit.h): the texture's
+    /// blue channel times `metallic` is the metalness and its green channel times `roughness`
+    /// the roughness at a hit, and kd = ka = base·(1 − metalness), kr = mix(0.04, base,
+    /// metalness) with base = base_color × `texture` (materials/metallic_roughness.h). The
+    /// ambient, diffuse and reflectivity above then only describe the factors.
+    const Texture* metallic_roughness_texture = nullptr;
+    /// glTF's baseColorFactor and metallicFactor, which the texture above needs at each hit.
+    Color base_color{1.0f};
+    float metallic = 1.0f;
 
     [[nodiscard]] bool is_dielectric() const { return transparency > 0.0f; }
 

@@ -1,0 +1,24 @@
+#pragma once
+/// \file glTF 2.0's metallic-roughness base layer on Glint's lobes (glTF 2.0, Appendix B):
+/// one Schlick-Fresnel GGX lobe whose F0 is the base colour for metal and 4% for the
+/// dielectric part, F0 = mix(0.04, base, metallic), beside the dielectric part's Lambertian
+/// diffuse base·(1 − metallic). The glTF loader applies it to a material's factors, and a
+/// material with a metallicRoughnessTexture to the values at each hit
+/// (materials/material_at_hit.h): one formula, so that equal values give equal bits.
+
+#include "glint/math/color.h"
+
+namespace glint {
+
+struct MetallicRoughnessLobes {
+    /// kd: metal has no diffuse part.
+    Color diffuse;
+    /// kr, Schlick's F0 of the material's `fresnel_mirror`.
+    Color reflectivity;
+};
+
+[[nodiscard]] inline MetallicRoughnessLobes metallic_roughness_lobes(const Color& base, float metallic) {
+    return {base * (1.0f - metallic), lerp(metallic, Color(0.04f), base)};
+}
+
+}  // namespace glint
