@@ -184,9 +184,18 @@ int run_render(const RenderOptions& opt) {
 
     if (opt.quiet) return 0;
     const double mrays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds * 1e-6 : 0.0;
-    fmt::print("{}x{}, {} spp: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}\n",
-               s.width, s.height, s.samples_per_axis * s.samples_per_axis, load_seconds, build_seconds, stats.seconds,
-               double(stats.rays) * 1e-6, mrays_per_second, output);
+    std::string spp = fmt::format("{} spp", s.samples_per_axis * s.samples_per_axis);
+    if (s.adaptive) {
+        // What adaptive sampling spent, not only what it was allowed.
+        uint64_t samples = 0;
+        for (uint32_t y = 0; y < s.height; ++y)
+            for (uint32_t x = 0; x < s.width; ++x) samples += film.samples_at(x, y);
+        spp = fmt::format("adaptive {} to {} spp ({:.1f} on average)", s.adaptive->min_spp,
+                          s.samples_per_axis * s.samples_per_axis, double(samples) / (double(s.width) * s.height));
+    }
+    fmt::print("{}x{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}\n",
+               s.width, s.height, spp, load_seconds, build_seconds, stats.seconds, double(stats.rays) * 1e-6,
+               mrays_per_second, output);
     return 0;
 }
 

@@ -125,6 +125,10 @@ check_refused "--adaptive-threshold: expected a positive relative error" --adapt
 check_refused "--shutter: expected finite times with CLOSE at or after OPEN; got '1,0'" --shutter 1,0
 check_refused "--shutter: expected OPEN,CLOSE (two times, e.g. 0,0.5); got '0.5'" --shutter 0.5
 check_refused "--time and --shutter: expected one of them, not both" --time 0 --shutter 0,1
+# The last line of an adaptive render says how many samples it spent, not only the most.
+out=$("$glint" render "$scenes/adaptive.toml" --width 64 --height 48 --threads 1 -o adaptive.png 2>&1) ||
+  fail "adaptive.toml failed: $out"
+grep -Eq "adaptive 4 to 64 spp \([0-9.]+ on average\)" <<<"$out" || fail "adaptive summary line: $out"
 # --time T is the instant [T, T]: the moving balls are sharp, and the same as --shutter T,T.
 mb=("$scenes/motion_blur.toml" --width 48 --height 36 --spp 4 --threads 1 -q)
 "$glint" render "${mb[@]}" --time 0.5 -o instant.pfm || fail "--time 0.5 failed"
