@@ -58,7 +58,7 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
         source.loaded.scene = make_spheres_scene();
         source.loaded.settings.samples_per_axis = 2;
     } else {
-        source = load_scene_file(path, SceneFileOptions{opt.camera});
+        source = load_scene_file(path, SceneFileOptions{opt.camera, shutter});
     }
     if (opt.aperture || opt.focus) {
         Camera& camera = source.loaded.scene.camera;

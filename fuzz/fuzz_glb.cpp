@@ -5,6 +5,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const glint::fuzz::ScratchFolder folder;
-    glint::fuzz::load_and_render(folder.write("scene.glb", glint::fuzz::as_text(data, size)));
+    // A shutter, as --shutter 0,1 gives: node animations are read and sampled over it.
+    glint::fuzz::load_and_render(folder.write("scene.glb", glint::fuzz::as_text(data, size)),
+                                 {.camera = {}, .shutter = glint::Shutter{0.0f, 1.0f}});
     return 0;
 }

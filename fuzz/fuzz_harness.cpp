@@ -52,7 +52,7 @@ void ScratchFolder::link(std::string_view name, const std::filesystem::path& tar
     std::filesystem::create_directory_symlink(target, path_ / name);
 }
 
-void load_and_render(const std::filesystem::path& scene_file) {
+void load_and_render(const std::filesystem::path& scene_file, const SceneFileOptions& options) {
     // No worker threads, ever: every assimp import forks (src/assets/isolated_import.h), and
     // clang 14's ASan allocator is not fork-safe; a TBB worker freeing memory as the next
     // input forked left the child waiting on that allocator's lock forever (timeouts in
@@ -60,7 +60,7 @@ void load_and_render(const std::filesystem::path& scene_file) {
     static const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     LoadedScene loaded;
     try {
-        loaded = std::move(load_scene_file(scene_file).loaded);
+        loaded = std::move(load_scene_file(scene_file, options).loaded);
     } catch (const SceneError&) {
         return;
     } catch (const ImageError&) {
@@ -69,6 +69,7 @@ void load_and_render(const std::filesystem::path& scene_file) {
     // A few pixels exercise the camera, every material and light the rays reach and the
     // integrator's recursion; the depth and light samples stay as the file asks (bounded
     // by the loader), the cost per input small.
+    if (options.shutter) loaded.scene.camera.set_shutter(*options.shutter);
     RenderSettings& settings = loaded.settings;
     settings.width = std::min<uint32_t>(settings.width, 6);
     settings.height = std::min<uint32_t>(settings.height, 4);

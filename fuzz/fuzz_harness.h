@@ -6,6 +6,8 @@
 /// scene or in a SceneError/ImageError; a loaded scene builds and renders. Anything else
 /// (a crash, a sanitizer report, another exception, a hang) is a finding.
 
+#include "glint/scene_file.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -39,8 +41,9 @@ private:
 
 /// Load `scene_file` as `glint render` does, build its render scene and render a few
 /// pixels at one sample with one thread. Returns normally when the loader refuses the file
-/// with a SceneError or ImageError (the errors it promises).
-void load_and_render(const std::filesystem::path& scene_file);
+/// with a SceneError or ImageError (the errors it promises). With `options.shutter`, the
+/// camera gets that shutter too, as with --shutter.
+void load_and_render(const std::filesystem::path& scene_file, const SceneFileOptions& options = {});
 
 /// The repository's folder (compiled in): example assets that fuzzed scenes may refer to.
 [[nodiscard]] std::filesystem::path source_dir();

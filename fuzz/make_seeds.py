@@ -62,6 +62,7 @@ def embed_gltf(path):
 
 def gltf_seeds(out):
     copy_small(out, "fuzz_gltf", ROOT.glob("tests/bad_inputs/gltf/*.gltf"))
+    copy_small(out, "fuzz_gltf", ROOT.glob("tests/data/*.gltf"))  # animated_quads: node animations
     copy_small(out, "fuzz_glb", ROOT.glob("tests/bad_inputs/glb/*.glb"))
     if not SHARED.is_dir():
         print(f"make_seeds: {SHARED} not found: no Khronos glTF samples in the seeds")

@@ -21,7 +21,7 @@ SceneFile load_scene_file(const std::filesystem::path& path, const SceneFileOpti
     const std::string ext = lower_case_extension(path);
     SceneFile file;
     if (ext == ".gltf" || ext == ".glb") {
-        GltfScene gltf = load_gltf_scene(path, GltfOptions{options.camera});
+        GltfScene gltf = load_gltf_scene(path, GltfOptions{options.camera, options.shutter});
         file.loaded = std::move(gltf.loaded);
         file.default_lighting = gltf.report.default_lighting;
         file.gltf = std::move(gltf.report);

@@ -77,6 +77,10 @@ check_entry() {
       check_run "render --env $file" "$expected" error "$file" -- "$glint" render --env "$file" -o "$out/OUT.png" "${size[@]}"
       check_run "info --env $file" "$expected" error "$file" -- "$glint" info generated/ok.toml --env "$file"
       ;;
+    time)
+      check_run "render $file --time 0" "$expected" error "$file" -- "$glint" render "$file" --time 0 -o "$out/OUT.png" "${size[@]}"
+      check_run "info $file --time 0" "$expected" error "$file" -- "$glint" info "$file" --time 0
+      ;;
     accepted | "")
       check_run "render $file" "$expected" "${mode:-error}" "$file" -- "$glint" render "$file" -o "$out/OUT.png" "${size[@]}"
       [ "$mode" = accepted ] && [ ! -s "$out/OUT.png" ] && fail "render $file: accepted, but no image was written"

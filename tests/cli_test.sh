@@ -136,6 +136,19 @@ mb=("$scenes/motion_blur.toml" --width 48 --height 36 --spp 4 --threads 1 -q)
 "$glint" render "${mb[@]}" -o blurred.pfm || fail "motion_blur.toml failed"
 cmp -s instant.pfm same_instant.pfm || fail "--time 0.5 and --shutter 0.5,0.5 differ"
 cmp -s instant.pfm blurred.pfm && fail "--time 0.5 rendered the same image as the whole shutter"
+# glTF node animations: --time poses the sliding, turning quad of animated_quads.gltf at that
+# instant, --shutter blurs it over the interval, and without either it rests (and says so).
+anim=("$scenes/../tests/data/animated_quads.gltf" --width 64 --height 48 --spp 4 --threads 1 -q)
+"$glint" render "${anim[@]}" --time 0 -o anim0.pfm || fail "glTF --time 0 failed"
+"$glint" render "${anim[@]}" --time 1 -o anim1.pfm || fail "glTF --time 1 failed"
+"$glint" render "${anim[@]}" --shutter 0,1 -o anim01.pfm || fail "glTF --shutter 0,1 failed"
+cmp -s anim0.pfm anim1.pfm && fail "glTF animation: --time 0 and --time 1 gave the same image"
+cmp -s anim0.pfm anim01.pfm && fail "glTF animation: --shutter 0,1 gave the image of --time 0"
+cmp -s anim1.pfm anim01.pfm && fail "glTF animation: --shutter 0,1 gave the image of --time 1"
+"$glint" info "$scenes/../tests/data/animated_quads.gltf" --shutter 0,1 | grep -q "1 animation(s) sampled over the shutter \[0, 1\]" ||
+  fail "glint info --shutter does not say the animation was sampled"
+"$glint" info "$scenes/../tests/data/animated_quads.gltf" 2>&1 | grep -q "animation(s) (nodes drawn at their rest transforms)" ||
+  fail "glint info without a shutter does not say the animation was ignored"
 if "$glint" render -o refused.png --spp abc 2>/dev/null; then fail "--spp abc accepted"; else
   [ $? -eq 1 ] || fail "a malformed number does not exit with 1"; fi
 

@@ -16,6 +16,9 @@ struct SceneFileOptions {
     /// glTF camera to render through: a name or an index in the file's "cameras" array
     /// (empty: the first placed camera). Naming one for a file that is not glTF is an error.
     std::string camera;
+    /// The shutter the scene is rendered with (--time, --shutter): glTF files pose their
+    /// animated nodes over it (GltfOptions::shutter); other formats ignore it.
+    std::optional<Shutter> shutter = std::nullopt;
 };
 
 /// A loaded scene file and what its loader found out about it.

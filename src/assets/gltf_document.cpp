@@ -85,6 +85,8 @@ std::vector<unsigned char> read_uri(const std::filesystem::path& gltf, const std
     return read_bytes(file);
 }
 
+}  // namespace
+
 Matrix4 node_matrix(const nlohmann::json& node) {
     Matrix4 m = Matrix4::identity();
     if (node.contains("matrix")) {
@@ -105,8 +107,6 @@ Matrix4 node_matrix(const nlohmann::json& node) {
         for (int i = 0; i < 4; ++i) q[i] = node.at("rotation").at(std::size_t(i)).get<float>();
     return trs_matrix(t, q, s);
 }
-
-}  // namespace
 
 Matrix4 trs_matrix(const Vec3& t, const float q[4], const Vec3& s) {
     Matrix4 m = Matrix4::identity();
@@ -292,7 +292,7 @@ Document read_document(const std::filesystem::path& path) {
     return doc;
 }
 
-std::vector<PlacedNode> placed_nodes(const Document& doc) {
+std::vector<PlacedNode> placed_nodes(const Document& doc, const std::vector<Matrix4>* local) {
     const auto& json = doc.json;
     const std::size_t node_count = array_size(json, "nodes");
     std::vector<int> roots;
@@ -311,16 +311,17 @@ std::vector<PlacedNode> placed_nodes(const Document& doc) {
     }
     std::vector<PlacedNode> placed;
     std::vector<bool> on_path(node_count, false);  // guards against cycles in broken files
-    std::function<void(int, const Matrix4&)> visit = [&](int n, const Matrix4& parent) {
+    std::function<void(int, int, const Matrix4&)> visit = [&](int n, int parent_index, const Matrix4& parent) {
         if (n < 0 || std::size_t(n) >= node_count || on_path[std::size_t(n)]) return;
         on_path[std::size_t(n)] = true;
         const auto& node = json.at("nodes").at(std::size_t(n));
-        const Matrix4 world = parent * node_matrix(node);
-        placed.push_back({n, world});
-        for (const auto& c : node.value("children", nlohmann::json::array())) visit(integer<int>(c), world);
+        const Matrix4 world = parent * (local ? local->at(std::size_t(n)) : node_matrix(node));
+        const int index = int(placed.size());
+        placed.push_back({n, world, parent_index});
+        for (const auto& c : node.value("children", nlohmann::json::array())) visit(integer<int>(c), index, world);
         on_path[std::size_t(n)] = false;
     };
-    for (int r : roots) visit(r, Matrix4::identity());
+    for (int r : roots) visit(r, -1, Matrix4::identity());
     return placed;
 }
 

@@ -40,6 +40,8 @@ struct Document {
 struct PlacedNode {
     int node = 0;
     Matrix4 world_from_node;
+    /// Index of its parent in the placed_nodes() list; -1 for a root.
+    int parent = -1;
 };
 
 /// Read a .gltf or .glb and every buffer it references. Throws SceneError naming the file
@@ -47,8 +49,13 @@ struct PlacedNode {
 [[nodiscard]] Document read_document(const std::filesystem::path& path);
 
 /// Every node reachable from the default scene (or from all root nodes when the file has
-/// no scenes), in depth-first order, with its accumulated transform.
-[[nodiscard]] std::vector<PlacedNode> placed_nodes(const Document& doc);
+/// no scenes), in depth-first order, with its accumulated transform: of the nodes' own
+/// (node_matrix), or of `local` (one matrix per node: the nodes posed by an animation).
+[[nodiscard]] std::vector<PlacedNode> placed_nodes(const Document& doc, const std::vector<Matrix4>* local = nullptr);
+
+/// A node's local transform (glTF 2.0 §3.5.3): its matrix, or T·R·S of its translation,
+/// rotation and scale.
+[[nodiscard]] Matrix4 node_matrix(const nlohmann::json& node);
 
 /// The encoded bytes (PNG, JPEG...) of image `index` and a file name whose extension tells
 /// the decoder the format. Throws SceneError when the image cannot be found.

@@ -238,6 +238,26 @@ std::vector<uint32_t> primitive_materials(const Document& doc) {
     return result;
 }
 
+std::vector<Matrix4> gpu_instances(const Document& doc, const nlohmann::json& node) {
+    if (!node.contains("extensions") || !node.at("extensions").contains("EXT_mesh_gpu_instancing")) return {};
+    const auto& attributes =
+        node.at("extensions").at("EXT_mesh_gpu_instancing").value("attributes", nlohmann::json::object());
+    std::vector<float> t, r, sc;
+    if (attributes.contains("TRANSLATION")) t = read_floats(doc, integer<std::size_t>(attributes.at("TRANSLATION")), 3);
+    if (attributes.contains("ROTATION")) r = read_floats(doc, integer<std::size_t>(attributes.at("ROTATION")), 4);
+    if (attributes.contains("SCALE")) sc = read_floats(doc, integer<std::size_t>(attributes.at("SCALE")), 3);
+    const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
+    std::vector<Matrix4> instances;
+    for (std::size_t i = 0; i < count; ++i) {
+        const Vec3 translation = t.empty() ? Vec3(0.0f) : Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+        const float identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        const float* rotation = r.empty() ? identity : &r[4 * i];
+        const Vec3 scale = sc.empty() ? Vec3(1.0f) : Vec3(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
+        instances.push_back(trs_matrix(translation, rotation, scale));
+    }
+    return instances;
+}
+
 /// EXT_mesh_gpu_instancing, which assimp 5.2.5 drops: the node's assimp placement is
 /// replaced by one placement per instance (node · T·R·S of the instance). assimp numbers
 /// its meshes glTF mesh by mesh, primitive by primitive, which gives the node's meshes.
@@ -259,14 +279,8 @@ std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file) {
             continue;
         const auto mesh = integer<std::size_t>(node.at("mesh"));
         if (mesh >= first_primitive.size()) continue;
-        const auto& attributes =
-            node.at("extensions").at("EXT_mesh_gpu_instancing").value("attributes", nlohmann::json::object());
-        std::vector<float> t, r, sc;
-        if (attributes.contains("TRANSLATION"))
-            t = read_floats(doc, integer<std::size_t>(attributes.at("TRANSLATION")), 3);
-        if (attributes.contains("ROTATION")) r = read_floats(doc, integer<std::size_t>(attributes.at("ROTATION")), 4);
-        if (attributes.contains("SCALE")) sc = read_floats(doc, integer<std::size_t>(attributes.at("SCALE")), 3);
-        const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
+        const std::vector<Matrix4> local = gpu_instances(doc, node);
+        const std::size_t count = local.size();
         if (count == 0) continue;
         const std::size_t lo = first_primitive[mesh], hi = lo + json.at("meshes").at(mesh).at("primitives").size();
         // Drop assimp's single placement of this node (same meshes, same world matrix).
@@ -275,11 +289,7 @@ std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file) {
         });
         const std::string name = node.value("name", "node" + std::to_string(placed.node));
         for (std::size_t i = 0; i < count; ++i) {
-            const Vec3 translation = t.empty() ? Vec3(0.0f) : Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
-            const float identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-            const float* rotation = r.empty() ? identity : &r[4 * i];
-            const Vec3 scale = sc.empty() ? Vec3(1.0f) : Vec3(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
-            const Matrix4 world = placed.world_from_node * trs_matrix(translation, rotation, scale);
+            const Matrix4 world = placed.world_from_node * local[i];
             for (std::size_t m = lo; m < hi; ++m)
                 if (file.meshes[m]) file.placements.push_back({uint32_t(m), world, name + "#" + std::to_string(i)});
         }

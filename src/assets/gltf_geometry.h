@@ -33,6 +33,10 @@ namespace glint::gltf {
 /// material index (the count of materials for "none").
 [[nodiscard]] std::vector<uint32_t> primitive_materials(const Document& doc);
 
+/// The node-from-instance matrices (T·R·S) of `node`'s EXT_mesh_gpu_instancing instances;
+/// empty for a node without the extension. Throws SceneError for an accessor outside its buffer.
+[[nodiscard]] std::vector<Matrix4> gpu_instances(const Document& doc, const nlohmann::json& node);
+
 /// EXT_mesh_gpu_instancing, which assimp 5.2.5 drops: each instanced node's placement in
 /// `file` becomes one placement per instance. Returns the number of instances placed.
 std::size_t expand_gpu_instancing(const Document& doc, MeshFile& file);

@@ -2,6 +2,7 @@
 
 #include "gltf_document.h"
 #include "gltf_materials.h"
+#include "gltf_motion.h"
 #include "import_notes.h"
 #include "mesh_file.h"
 #include "place_meshes.h"
@@ -10,8 +11,11 @@
 #include "glint/math/constants.h"
 #include "glint/scene/asset_defaults.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace glint {
 
@@ -48,6 +52,7 @@ void collect_cameras(const gltf::Document& doc, const std::vector<gltf::PlacedNo
         const Vec3 up = frame.vector(Vec3(0.0f, 1.0f, 0.0f));
         GltfCamera result;
         result.index = int(index);
+        result.node = placed.node;
         result.name = cam.value("name", node.value("name", "camera" + std::to_string(index)));
         try {
             if (cam.value("type", "") == "orthographic") {
@@ -115,9 +120,10 @@ void collect_lights(const gltf::Document& doc, const std::vector<gltf::PlacedNod
     }
 }
 
-/// Skins, morph targets and animations: the geometry reader never sees them (it is given
-/// the geometry only), so they are reported from the JSON.
-void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, ImportNotes& notes) {
+/// Skins, morph targets and (unless a shutter poses the nodes) animations: the geometry
+/// reader never sees them (it is given the geometry only), so they are reported from the JSON.
+void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNode>& nodes, bool posed,
+                    ImportNotes& notes) {
     const auto& json = doc.json;
     for (const gltf::PlacedNode& placed : nodes) {
         const auto& node = json.at("nodes").at(std::size_t(placed.node));
@@ -134,8 +140,43 @@ void note_animation(const gltf::Document& doc, const std::vector<gltf::PlacedNod
             }
         ++m;
     }
-    if (const std::size_t animations = gltf::array_size(json, "animations"); animations > 0)
+    if (const std::size_t animations = gltf::array_size(json, "animations"); animations > 0 && !posed)
         notes.ignored(std::to_string(animations) + " animation(s) (nodes drawn at their rest transforms)", "");
+}
+
+/// What the shutter did with the file's animations.
+void note_shutter(const gltf::NodeAnimation& animation, const std::optional<gltf::NodeMotion>& motion,
+                  const Shutter& shutter, ImportNotes& notes) {
+    const std::size_t count = animation.animation_count();
+    if (count == 0) return;
+    const std::string animations = std::to_string(count) + " animation(s)";
+    if (!motion) {
+        notes.mapped(animations + ": no channel moves a node");
+    } else if (shutter.close > shutter.open) {
+        notes.mapped(fmt::format("{} sampled over the shutter [{}, {}] at {} time(s){}", animations, shutter.open,
+                                 shutter.close, motion->times().size(),
+                                 motion->thinned() ? " (evenly: more key times than that in the shutter)" : ""));
+    } else {
+        notes.mapped(fmt::format("{} posed at time {}", animations, shutter.open));
+    }
+}
+
+/// Cameras and lights are placed where their nodes are at the shutter's open time: a glTF
+/// camera's motion (Camera::set_motion moves on straight lines between scene times 0 and 1,
+/// not along the file's keys) and moving lights (light sampling assumes lights stay put)
+/// are not blurred.
+void note_posed_camera_and_lights(const gltf::Document& doc, const gltf::NodeMotion& motion, const GltfReport& report,
+                                  ImportNotes& notes) {
+    const std::vector<gltf::PlacedNode>& nodes = motion.at_open();
+    for (std::size_t p = 0; p < nodes.size(); ++p) {
+        if (!motion.moves(p)) continue;
+        const auto& node = doc.json.at("nodes").at(std::size_t(nodes[p].node));
+        const std::string name = node.value("name", "node" + std::to_string(nodes[p].node));
+        if (report.selected_camera >= 0 && report.cameras[std::size_t(report.selected_camera)].node == nodes[p].node)
+            notes.ignored("camera animation blur (the camera is placed where it is at the shutter's open time)", name);
+        if (node.contains("extensions") && node.at("extensions").contains("KHR_lights_punctual"))
+            notes.ignored("light animation (the light is placed where it is at the shutter's open time)", name);
+    }
 }
 
 int find_camera(const GltfReport& report, const std::string& wanted) {
@@ -186,8 +227,15 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     MeshFile file = read_gltf_geometry(doc);
     for (std::string& w : file.warnings) result.loaded.warnings.push_back(std::move(w));
 
-    const std::vector<gltf::PlacedNode> nodes = gltf::placed_nodes(doc);
-    note_animation(doc, nodes, notes);
+    // With a shutter, the nodes are posed by the file's animations (gltf_motion.h).
+    std::optional<gltf::NodeMotion> motion;
+    if (options.shutter) {
+        const gltf::NodeAnimation animation(doc, notes);
+        if (animation.moves_nodes()) motion.emplace(doc, animation, *options.shutter);
+        note_shutter(animation, motion, *options.shutter, notes);
+    }
+    const std::vector<gltf::PlacedNode> nodes = motion ? motion->at_open() : gltf::placed_nodes(doc);
+    note_animation(doc, nodes, options.shutter.has_value(), notes);
     const std::size_t gpu_instances = file.gpu_instances;
     if (gpu_instances > 0)
         notes.mapped("EXT_mesh_gpu_instancing: " + std::to_string(gpu_instances) + " instance(s) placed");
@@ -203,7 +251,11 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
         if (info.alpha_mask) file.meshes[mesh]->set_alpha_mask(info.alpha_mask, info.alpha_cutoff);
         return info.scene_material;
     };
-    const PlacedMeshes placed = place_meshes(scene, file.placements, file.meshes, Transform(), material, notes);
+    std::size_t moving = 0;
+    const PlacedMeshes placed = motion
+                                    ? gltf::place_posed_meshes(scene, doc, file, *motion, material, notes, moving)
+                                    : place_meshes(scene, file.placements, file.meshes, Transform(), material, notes);
+    if (moving > 0) notes.mapped("animation: " + std::to_string(moving) + " object(s) move while the shutter is open");
     report.objects = placed.objects;
     report.instanced_triangles = placed.instanced_triangles;
     for (const TriangleMesh* mesh : placed.meshes) report.triangles += mesh->triangle_count();
@@ -216,6 +268,7 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     collect_lights(doc, nodes, scene, report, notes);
 
     choose_camera(path, options, report, scene, result.loaded.settings, notes);
+    if (motion) note_posed_camera_and_lights(doc, *motion, report, notes);
     if (report.lights == 0) {
         add_default_lighting(scene);
         report.default_lighting = true;

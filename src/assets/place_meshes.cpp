@@ -9,6 +9,7 @@ PlacedMeshes place_meshes(Scene& scene, const std::vector<MeshPlacement>& placem
                           const std::function<uint32_t(uint32_t mesh)>& material, ImportNotes& notes) {
     PlacedMeshes placed;
     for (const MeshPlacement& placement : placements) {
+        placed.objects_by_placement.emplace_back();
         Transform file_from_mesh;
         try {
             file_from_mesh = Transform(placement.file_from_mesh);
@@ -28,7 +29,8 @@ PlacedMeshes place_meshes(Scene& scene, const std::vector<MeshPlacement>& placem
             notes.ignored("node placing its mesh beyond the range of float coordinates (a huge transform)", placement.node);
             continue;
         }
-        scene.add_object(mesh, material(placement.mesh), world_from_mesh, placement.node);
+        placed.objects_by_placement.back() =
+            scene.add_object(mesh, material(placement.mesh), world_from_mesh, placement.node);
         ++placed.objects;
         placed.instanced_triangles += mesh->triangle_count();
         placed.meshes.insert(mesh.get());

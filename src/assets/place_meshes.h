@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <unordered_set>
 #include <vector>
 
@@ -21,6 +22,8 @@ struct PlacedMeshes {
     std::size_t instanced_triangles = 0;
     /// The distinct meshes placed.
     std::unordered_set<const TriangleMesh*> meshes;
+    /// Per placement, the object it became (none for a placement skipped).
+    std::vector<std::optional<uint32_t>> objects_by_placement;
 };
 
 /// Add to `scene` one object per placement whose mesh exists (`meshes[placement.mesh]`),

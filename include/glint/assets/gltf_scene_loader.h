@@ -6,6 +6,7 @@
 #include "glint/scene/loaded_scene.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,11 +16,17 @@ struct GltfOptions {
     /// Camera to render through: its name or its index in the file's "cameras" array
     /// (the first placed camera when empty). A name that matches nothing is an error.
     std::string camera;
+    /// When the camera's shutter is open, in seconds of the file's animations: nodes are
+    /// posed by them, and objects that move while it is open get motion keys (blur). Without
+    /// one, animations are ignored and nodes keep their rest transforms.
+    std::optional<Shutter> shutter = std::nullopt;
 };
 
 /// A camera the file places in its scene.
 struct GltfCamera {
     int index = 0;
+    /// The node that places it.
+    int node = 0;
     std::string name;
     Camera camera;
     /// glTF aspectRatio (0 when the file leaves it to the viewport).
