@@ -153,3 +153,24 @@ TEST(GltfAnimationNotes, WeightsAndUnknownPathsAreIgnoredWithANote) {
 }
 
 }  // namespace
+
+TEST(GltfInstancingErrors, AttributesOfDifferentCountsAreRefusedNotReadPastTheirEnd) {
+    // EXT_mesh_gpu_instancing with three translations and one scale: both loaders (with and
+    // without a shutter) used to read the scales past their end (heap overflow under ASan).
+    AnimatedQuad quad;
+    const std::size_t translations = quad.accessor({0, 0, 0, 1, 0, 0, 2, 0, 0}, "VEC3");
+    const std::size_t scales = quad.accessor({1, 1, 1}, "VEC3");
+    quad.json()["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", translations},
+                                                                                    {"SCALE", scales}};
+    const fs::path path = quad.write(glint_test::temp_dir(), "instancing_counts");
+    EXPECT_NE(shutter_error(path).find("EXT_mesh_gpu_instancing attributes have 1 and 3 instances"), std::string::npos)
+        << shutter_error(path);
+    try {
+        (void)glint::load_gltf_scene(path);
+        ADD_FAILURE() << "loaded without a shutter";
+    } catch (const glint::SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("EXT_mesh_gpu_instancing attributes have 1 and 3 instances"),
+                  std::string::npos)
+            << e.what();
+    }
+}

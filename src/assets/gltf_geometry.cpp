@@ -1,5 +1,7 @@
 #include "gltf_geometry.h"
 
+#include "glint/diagnostics.h"
+
 #include <algorithm>
 
 #include <cstring>
@@ -246,7 +248,14 @@ std::vector<Matrix4> gpu_instances(const Document& doc, const nlohmann::json& no
     if (attributes.contains("TRANSLATION")) t = read_floats(doc, integer<std::size_t>(attributes.at("TRANSLATION")), 3);
     if (attributes.contains("ROTATION")) r = read_floats(doc, integer<std::size_t>(attributes.at("ROTATION")), 4);
     if (attributes.contains("SCALE")) sc = read_floats(doc, integer<std::size_t>(attributes.at("SCALE")), 3);
+    // The extension requires one count for all attributes; a shorter one would be read past
+    // its end.
     const std::size_t count = std::max({t.size() / 3, r.size() / 4, sc.size() / 3});
+    for (const std::size_t n : {t.size() / 3, r.size() / 4, sc.size() / 3})
+        if (n != 0 && n != count)
+            throw SceneError(doc.path.string() + ": node '" + node.value("name", std::string()) +
+                             "': EXT_mesh_gpu_instancing attributes have " + std::to_string(n) + " and " +
+                             std::to_string(count) + " instances (expected the same count in every attribute)");
     std::vector<Matrix4> instances;
     for (std::size_t i = 0; i < count; ++i) {
         const Vec3 translation = t.empty() ? Vec3(0.0f) : Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
