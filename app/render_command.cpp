@@ -114,7 +114,7 @@ int run_render(const RenderOptions& opt) {
     std::optional<glint::AovFilm> aov_film;
     if (!s.aovs.empty()) aov_film.emplace(s.width, s.height, s.aovs);
     glint::AovFilm* const aovs = aov_film ? &*aov_film : nullptr;
-    const glint::RenderFingerprint fingerprint = glint::render_fingerprint(opt.scene_path, s);
+    const glint::RenderFingerprint fingerprint = glint::render_fingerprint(opt.scene_path, s, scene.camera());
     if (opt.resume) {
         glint::read_checkpoint(checkpoint, fingerprint, film, tiles, aovs);
         if (!opt.quiet)

@@ -261,6 +261,11 @@ wait_for other.pfm.checkpoint; kill -INT $pid; wait $pid
 if "$glint" render "$scenes/whitted1980.toml" --width 640 --height 480 --spp 4 -q -o other.pfm --resume 2>err.txt; then
   fail "a checkpoint of another render was resumed"; fi
 grep -q "spp: the checkpoint has 16, this render 4" err.txt || fail "mismatch message: $(cat err.txt)"
+# Options that change the camera, not the file, change the render too: a checkpoint made
+# without a lens is not resumed with one.
+if "$glint" render "${res[@]}" --aperture 0.05 -o other.pfm --resume 2>err.txt; then
+  fail "a checkpoint was resumed through another lens"; fi
+grep -q "lens: the checkpoint has aperture 0, " err.txt || fail "lens mismatch message: $(cat err.txt)"
 printf 'not a checkpoint' > other.pfm.checkpoint
 if "$glint" render "${res[@]}" -o other.pfm --resume 2>err.txt; then fail "a corrupt checkpoint was resumed"; fi
 grep -q "not a Glint checkpoint" err.txt || fail "corrupt checkpoint message: $(cat err.txt)"

@@ -41,7 +41,8 @@ std::string read_file(const std::filesystem::path& path) {
 
 }  // namespace
 
-RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, const RenderSettings& s) {
+RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, const RenderSettings& s,
+                                     const Camera& camera) {
     RenderFingerprint f;
     if (scene_file.empty()) {
         f.emplace_back("scene", "the built-in scene");
@@ -49,6 +50,23 @@ RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, co
         f.emplace_back("scene", scene_file.filename().string());
         f.emplace_back("scene content", fmt::format("{:016x}", fnv1a(read_file(scene_file))));
     }
+    // Nine significant digits: a float's value exactly, so any change of the camera shows.
+    const Vec3 &e = camera.eye(), &d = camera.forward(), &u = camera.up();
+    f.emplace_back("camera", fmt::format("{} at ({:.9g}, {:.9g}, {:.9g}) looking ({:.9g}, {:.9g}, {:.9g}) up ({:.9g}, "
+                                         "{:.9g}, {:.9g}), {} {:.9g}",
+                                         camera.projection() == Projection::Perspective ? "perspective" : "orthographic",
+                                         e.x, e.y, e.z, d.x, d.y, d.z, u.x, u.y, u.z,
+                                         camera.projection() == Projection::Perspective ? "fov" : "height",
+                                         camera.projection() == Projection::Perspective ? camera.vertical_fov()
+                                                                                        : camera.view_height()));
+    const ThinLens& lens = camera.lens();
+    f.emplace_back("lens", fmt::format("aperture {:.9g}, focus {:.9g}, blades {}, rotation {:.9g}", lens.aperture_radius,
+                                       lens.focus_distance, lens.blades, lens.rotation));
+    f.emplace_back("shutter", fmt::format("[{:.9g}, {:.9g}]", camera.shutter().open, camera.shutter().close));
+    if (const auto& end = camera.end_pose())
+        f.emplace_back("camera motion", fmt::format("to ({:.9g}, {:.9g}, {:.9g}) looking at ({:.9g}, {:.9g}, {:.9g})",
+                                                    end->eye.x, end->eye.y, end->eye.z, end->target.x, end->target.y,
+                                                    end->target.z));
     f.emplace_back("width", std::to_string(s.width));
     f.emplace_back("height", std::to_string(s.height));
     f.emplace_back("spp", std::to_string(s.samples_per_axis * s.samples_per_axis));

@@ -8,6 +8,7 @@
 #include "glint/image/film.h"
 #include "glint/integrators/render_settings.h"
 #include "glint/integrators/tile_grid.h"
+#include "glint/scene/camera.h"
 
 #include <filesystem>
 #include <stdexcept>
@@ -27,9 +28,11 @@ public:
 /// only by a render with the same fingerprint.
 using RenderFingerprint = std::vector<std::pair<std::string, std::string>>;
 
-/// `scene_file` empty stands for the built-in scene. Throws CheckpointError if the file
-/// cannot be read.
-[[nodiscard]] RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, const RenderSettings& s);
+/// `scene_file` empty stands for the built-in scene. `camera` is the one rendered through:
+/// command-line options (--aperture, --focus, --shutter, --time, --camera) change it
+/// without changing the file. Throws CheckpointError if the file cannot be read.
+[[nodiscard]] RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, const RenderSettings& s,
+                                                   const Camera& camera);
 
 /// Where the checkpoint of the image `output` lives: beside it, `<output>.checkpoint`.
 [[nodiscard]] std::filesystem::path checkpoint_path_for(const std::filesystem::path& output);
