@@ -1,6 +1,7 @@
 // glint: the command-line front end of libglint. It parses arguments, loads a scene,
 // renders it and writes the image; everything else lives in the library.
 
+#include "display_options.h"
 #include "explain_command.h"
 #include "info_command.h"
 #include "render_command.h"
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
     render_cmd->add_option("-o,--output", render.output,
                            "Output image: .exr/.hdr/.pfm (linear) or .png/.jpg/.tif (sRGB); default <scene>.png");
     glint::app::add_render_overrides(render_cmd, render.overrides);
-    render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG/JPEG/TIFF output");
+    glint::app::add_display_options(render_cmd, render.exposure, render.tone_curve);
     render_cmd->add_flag("--resume", render.resume,
                          "Continue an interrupted render from the checkpoint beside the output (<output>.checkpoint)");
     render_cmd->add_option("--checkpoint-every", render.checkpoint_every,

@@ -1,5 +1,6 @@
 #include "render_command.h"
 
+#include "display_options.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 #include "render_overrides.h"
@@ -158,11 +159,15 @@ int run_render(const RenderOptions& opt) {
     bar.finish();
     if (stream) stream->finish();
 
+    const glint::DisplayTransform display_transform =
+        with_display_options(loaded.display, opt.exposure, opt.tone_curve);
     glint::WriteOptions write_options;
-    write_options.exposure = opt.exposure;
-    // The image with the AOVs' channels after its own.
+    write_options.tone_curve = display_transform.tone_curve;
+    // The image with the AOVs' channels after its own; an automatic exposure is chosen from it.
     auto image = [&](bool sample_counts) {
         const glint::Image beauty = film.to_image(sample_counts);
+        write_options.exposure = display_transform.exposure.automatic ? glint::auto_exposure_stops(beauty)
+                                                                      : display_transform.exposure.stops;
         return aovs ? aovs->append_to(beauty) : beauty;
     };
     if (!stats.complete()) {
@@ -193,9 +198,15 @@ int run_render(const RenderOptions& opt) {
         spp = fmt::format("adaptive {} to {} spp ({:.1f} on average)", s.adaptive->min_spp,
                           s.samples_per_axis * s.samples_per_axis, double(samples) / (double(s.width) * s.height));
     }
-    fmt::print("{}x{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}\n",
+    // What the display transform did, for display formats (float formats keep radiance).
+    std::string display_note;
+    if (!glint::keeps_radiance(output) &&
+        display_transform != glint::DisplayTransform{})
+        display_note = fmt::format(" ({}, exposure {}{:+.2f})", glint::tone_curve_name(display_transform.tone_curve),
+                              display_transform.exposure.automatic ? "auto " : "", write_options.exposure);
+    fmt::print("{}x{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}{}\n",
                s.width, s.height, spp, load_seconds, build_seconds, stats.seconds, double(stats.rays) * 1e-6,
-               mrays_per_second, output);
+               mrays_per_second, output, display_note);
     return 0;
 }
 

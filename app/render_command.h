@@ -5,6 +5,8 @@
 #include "render_overrides.h"
 #include "scene_source.h"
 
+#include "glint/image/display_transform.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -16,7 +18,9 @@ struct RenderOptions {
     SceneOptions scene;
     std::string output;
     RenderOverrides overrides;
-    float exposure = 0.0f;
+    /// --exposure and --tonemap; unset: what the scene file asks for (LoadedScene::display).
+    std::optional<glint::Exposure> exposure;
+    std::optional<glint::ToneCurve> tone_curve;
     bool quiet = false;
     /// Continue from the checkpoint beside the output (`<output>.checkpoint`).
     bool resume = false;

@@ -1,5 +1,7 @@
 #include "view_command.h"
 
+#include "display_options.h"
+
 #include "glint/image/image_io.h"
 #include "glint/integrators/integrator_registry.h"
 #include "glint/scene/render_scene.h"
@@ -22,7 +24,7 @@ void add_view_options(CLI::App* cmd, ViewOptions& opt) {
     cmd->add_option("scene", opt.scene_path, "Scene file, as for `glint render`; none shows the built-in scene")
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", opt.output, "Where S saves the image (.exr linear, .png sRGB); default <scene>.png");
-    cmd->add_option("--exposure", opt.exposure, "Exposure in stops for the window and PNG output");
+    add_display_options(cmd, opt.exposure, opt.tone_curve);
     cmd->add_option("--script", opt.script, "Run a scripted session from this file (for tests and demos)")
         ->check(CLI::ExistingFile);
     cmd->add_option("--benchmark", opt.benchmark,
@@ -65,7 +67,8 @@ int run_view(const ViewOptions& opt) {
     apply_overrides(opt.overrides, s);
     const RenderScene scene(std::move(source.loaded.scene));
     const std::unique_ptr<Integrator> integrator = make_integrator(s);
-    ViewerWindow window(scene, *integrator, s, ViewerOptions{output, opt.exposure, std::move(script), benchmark});
+    ViewerWindow window(scene, *integrator, s, ViewerOptions{output, with_display_options(source.loaded.display, opt.exposure, opt.tone_curve),
+                                                                      std::move(script), benchmark});
     return window.run();
 #endif
 }

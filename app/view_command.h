@@ -6,6 +6,8 @@
 #include "render_overrides.h"
 #include "scene_source.h"
 
+#include "glint/image/display_transform.h"
+
 #include <optional>
 #include <string>
 
@@ -17,7 +19,9 @@ struct ViewOptions {
     RenderOverrides overrides;
     /// Where `S` saves the accumulated image; default <scene>.png.
     std::string output;
-    float exposure = 0.0f;
+    /// --exposure and --tonemap over the scene's own display transform.
+    std::optional<glint::Exposure> exposure;
+    std::optional<glint::ToneCurve> tone_curve;
     /// A scripted session (viewer/session_script.h), read from this file.
     std::optional<std::string> script;
     /// Orbit for this many frames, then render to convergence; print frames/s and the time.

@@ -125,6 +125,20 @@ check_refused "--adaptive-threshold: expected a positive relative error" --adapt
 check_refused "--shutter: expected finite times with CLOSE at or after OPEN; got '1,0'" --shutter 1,0
 check_refused "--shutter: expected OPEN,CLOSE (two times, e.g. 0,0.5); got '0.5'" --shutter 0.5
 check_refused "--time and --shutter: expected one of them, not both" --time 0 --shutter 0,1
+check_refused "--exposure: expected a number of stops or 'auto'; got 'bright'" --exposure bright
+check_refused "--tonemap: expected none, clamp, aces, agx or pbr-neutral; got 'filmic'" --tonemap filmic
+# Display transforms: a glTF file is tone mapped with PBR Neutral unless told otherwise, a
+# TOML scene is not; --exposure auto says the stops it chose; EXR output keeps radiance.
+out=$("$glint" render "$scenes/../tests/data/animated_quads.gltf" --width 32 --height 24 -o quads.png 2>/dev/null) ||
+  fail "animated_quads.gltf failed"
+grep -q -- "-> quads.png (pbr-neutral, exposure +0.00)" <<<"$out" || fail "glTF display transform: $out"
+out=$("$glint" render --width 32 --height 24 --exposure auto --tonemap agx -o auto.png) || fail "--exposure auto failed"
+grep -Eq -- "-> auto.png \(agx, exposure auto [+-][0-9.]+\)" <<<"$out" || fail "--exposure auto summary: $out"
+"$glint" render --width 32 --height 24 --tonemap aces -o aces.pfm -q || fail "--tonemap with a PFM failed"
+"$glint" render --width 32 --height 24 -o plain.pfm -q || fail "plain PFM failed"
+cmp -s aces.pfm plain.pfm || fail "--tonemap changed a float image"
+out=$("$glint" render --width 32 --height 24 -o plain.png) || fail "plain PNG failed"
+grep -q "exposure" <<<"$out" && fail "a TOML scene without [display] reported a display transform: $out"
 # The last line of an adaptive render says how many samples it spent, not only the most.
 out=$("$glint" render "$scenes/adaptive.toml" --width 64 --height 48 --threads 1 -o adaptive.png 2>&1) ||
   fail "adaptive.toml failed: $out"

@@ -251,15 +251,21 @@ void ViewerWindow::explain_pixel(int x, int y) {
     std::fflush(stdout);
 }
 
+float ViewerWindow::exposure_stops(const Image& image) const {
+    return options_.display.exposure.automatic ? auto_exposure_stops(image) : options_.display.exposure.stops;
+}
+
 void ViewerWindow::save(const std::string& path) {
     const std::shared_ptr<const Film> film = render_->accumulated();
     if (!film) {
         message_ = "nothing to save yet: no full-resolution pass has finished";
     } else {
         WriteOptions write_options;
-        write_options.exposure = options_.exposure;
+        const Image image = film->to_image();
+        write_options.exposure = exposure_stops(image);
+        write_options.tone_curve = options_.display.tone_curve;
         try {
-            write_image(path, film->to_image(), write_options);
+            write_image(path, image, write_options);
             message_ = fmt::format("saved {} ({} spp)", path, render_->status().passes);
         } catch (const std::exception& e) {
             message_ = e.what();

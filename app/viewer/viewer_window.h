@@ -11,6 +11,7 @@
 #include "progressive_render.h"
 #include "session_script.h"
 
+#include "glint/image/display_transform.h"
 #include "glint/integrators/cost_map.h"
 #include "glint/integrators/ray_tree.h"
 #include "glint/scene/orbit_camera.h"
@@ -27,7 +28,8 @@ namespace glint::app {
 
 struct ViewerOptions {
     std::string output;
-    float exposure = 0.0f;
+    /// How the window and saved PNGs show radiance (EXR keeps it).
+    DisplayTransform display;
     std::vector<ScriptStep> script;
     /// Measure instead of waiting for a user: orbit for this many frames, then time the
     /// render to convergence, print both and close.
@@ -65,6 +67,8 @@ private:
 
     void explain_pixel(int x, int y);
     void save(const std::string& path);
+    /// The display exposure for `image`: the chosen stops, or the meter's when automatic.
+    [[nodiscard]] float exposure_stops(const Image& image) const;
     void upload_newest();
     void upload_rgba(const std::vector<uint8_t>& rgba, uint32_t width, uint32_t height) const;
     /// Show the image (none) or a heatmap of `kind`.

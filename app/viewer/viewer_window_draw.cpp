@@ -52,11 +52,12 @@ ImU32 ray_colour(const RayTreeNode& node) {
 void ViewerWindow::upload_newest() {
     const std::shared_ptr<const Film> film = render_->newest(shown_version_);
     if (!film) return;
-    const float gain = std::exp2(options_.exposure);
+    const float gain = std::exp2(options_.display.exposure.automatic ? exposure_stops(film->to_image())
+                                                                     : options_.display.exposure.stops);
     std::vector<uint8_t> rgba(std::size_t(film->width()) * film->height() * 4);
     for (uint32_t y = 0; y < film->height(); ++y)
         for (uint32_t x = 0; x < film->width(); ++x) {
-            const Color c = film->at(x, y) * gain;
+            const Color c = apply_tone_curve(options_.display.tone_curve, film->at(x, y) * gain);
             uint8_t* p = &rgba[(std::size_t(y) * film->width() + x) * 4];
             p[0] = srgb8(c.r);
             p[1] = srgb8(c.g);

@@ -277,6 +277,12 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
         notes.mapped("lights: " + std::to_string(report.lights) + " KHR_lights_punctual light(s), intensity / pi");
     }
 
+    // glTF is in physical units (lux, candela, nits): sunlit surfaces and visible lamps go
+    // far past display white, so PNG/JPEG output is tone mapped as the Khronos glTF Sample
+    // Viewer does by default, at the file's own exposure.
+    result.loaded.display = DisplayTransform{ToneCurve::PbrNeutral, Exposure{}};
+    notes.mapped("display: pbr-neutral tone curve for PNG/JPEG (--tonemap, --exposure)");
+
     std::size_t single_sided = 0;
     for (std::size_t m = 0; m < report.materials; ++m)
         if (!materials.material(int(m)).double_sided) ++single_sided;

@@ -160,6 +160,8 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
     return read_pixels(*input, name, encoding);
 }
 
+bool keeps_radiance(const std::filesystem::path& path) { return is_float_format(lower_case_extension(path)); }
+
 bool is_supported_output(const std::filesystem::path& path) {
     const std::string ext = lower_case_extension(path);
     return std::find(kOutputExtensions.begin(), kOutputExtensions.end(), ext) != kOutputExtensions.end();
@@ -203,11 +205,19 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
     const int channels = named ? image.channels : std::min(image.channels, 3);
     std::vector<float> data(std::size_t(image.width) * image.height * channels);
     const float gain = std::exp2(options.exposure);
-    for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
-        for (int c = 0; c < channels; ++c) {
-            const float v = image.pixels[p * image.channels + c];
-            data[p * channels + c] = keep_linear ? v : linear_to_srgb(v * gain);
+    for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p) {
+        const float* in = &image.pixels[p * image.channels];
+        float* out = &data[p * channels];
+        if (keep_linear) {
+            std::copy(in, in + channels, out);
+        } else if (channels == 3) {
+            const Color display = apply_tone_curve(options.tone_curve, Color(in[0], in[1], in[2]) * gain);
+            for (int c = 0; c < 3; ++c) out[c] = linear_to_srgb(display[c]);
+        } else {
+            for (int c = 0; c < channels; ++c)
+                out[c] = linear_to_srgb(apply_tone_curve(options.tone_curve, Color(in[c] * gain)).r);
         }
+    }
 
     const std::filesystem::path tmp = temporary_path_for(path);
     std::string error;

@@ -98,6 +98,23 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     t.reject_unknown_keys();
 }
 
+/// `[display]`: how PNG/JPEG output is exposed and tone mapped (docs/scene-format.md).
+DisplayTransform read_display(const ParamTable& t) {
+    DisplayTransform display;
+    constexpr std::array<std::string_view, 5> kCurves = {"none", "clamp", "aces", "agx", "pbr-neutral"};
+    display.tone_curve = *parse_tone_curve(t.choice("tonemap", kCurves, "none"));
+    if (const ParamValue* exposure = t.find("exposure")) {
+        if (exposure->is_number())
+            display.exposure.stops = exposure->as_float("display.exposure");
+        else if (exposure->is_string() && exposure->as_string("display.exposure") == "auto")
+            display.exposure.automatic = true;
+        else
+            t.fail("exposure", "a number of stops or \"auto\"");
+    }
+    t.reject_unknown_keys();
+    return display;
+}
+
 /// The 35 mm film format's height, for an f-number given without a focal length.
 constexpr float kFullFrameHeightMm = 24.0f;
 
@@ -252,6 +269,7 @@ LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& bas
     BuildContext context(base_dir, out.scene, meshes, out.warnings);
     // Look every section up first so that a misspelt section is reported before any work.
     const ParamTable* render = root.table("render");
+    const ParamTable* display = root.table("display");
     const ParamTable* camera = root.table("camera");
     const ParamTable* background = root.table("background");
     const ParamTable* world = root.table("world");
@@ -263,6 +281,7 @@ LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& bas
     root.reject_unknown_keys();
 
     if (render) read_render(*render, out.settings);
+    if (display) out.display = read_display(*display);
     if (camera) out.scene.camera = read_camera(*camera);
     if (world) read_world(*world, out.scene);
     if (background) out.scene.background = read_background(*background, context);

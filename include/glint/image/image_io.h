@@ -2,6 +2,7 @@
 /// \file Reading and writing images through OpenImageIO.
 
 #include "glint/image/image.h"
+#include "glint/image/tone_curve.h"
 
 #include <cstddef>
 #include <filesystem>
@@ -41,13 +42,16 @@ inline constexpr int kMaxImageSide = 65536;
 [[nodiscard]] Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name,
                                  ColorEncoding encoding = ColorEncoding::Color);
 
+/// The display transform for display formats (PNG, JPEG, 8-bit TIFF): value·2^exposure, then
+/// the tone curve, then sRGB encoding. Float formats ignore both.
 struct WriteOptions {
-    /// Exposure in stops applied before display encoding (PNG, JPEG, TIFF 8-bit): value·2^exposure.
+    /// Stops (an automatic exposure is resolved by the caller: auto_exposure_stops).
     float exposure = 0.0f;
+    ToneCurve tone_curve = ToneCurve::None;
 };
 
 /// Write by extension: .exr, .hdr, .pfm keep linear floats; .png, .jpg, .tif, .bmp get
-/// exposure and sRGB encoding in 8 bits. An EXR keeps every channel of an image whose
+/// the display transform of `options` and sRGB encoding in 8 bits. An EXR keeps every channel of an image whose
 /// channels are named (Image::channel_names: a partial render's "samples", AOVs); the other
 /// formats, and images without names, write R, G, B. The file is written under a temporary name in the
 /// same folder and renamed, so a failure never leaves a partial image. Throws ImageError.
@@ -56,6 +60,10 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
 /// The temporary name write_image writes `path` under before renaming it into place:
 /// hidden, beside it, and unique to this process.
 [[nodiscard]] std::filesystem::path temporary_path_for(const std::filesystem::path& path);
+
+/// True if write_image writes `path` as linear floats (.exr, .hdr, .pfm), which no display
+/// transform touches.
+[[nodiscard]] bool keeps_radiance(const std::filesystem::path& path);
 
 /// True if write_image knows the extension of `path`.
 [[nodiscard]] bool is_supported_output(const std::filesystem::path& path);
