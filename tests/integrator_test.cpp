@@ -169,6 +169,22 @@ TEST(WhittedRadiance, GlassSlabHeadOnFollowsFresnel) {
     expect_color_near(radiance(prepared, head_on, 1), b * f, 1e-6f);
 }
 
+TEST(WhittedRadiance, GlassShowsItsBlinnPhongHighlight) {
+    // A clear dielectric (t = 1) takes no diffuse light, but its highlight is the surface's:
+    // head-on under a light straight above, the glass slab adds ks·E to the Fresnel result.
+    Scene scene;
+    Material glass = lambert(Color(0.8f));
+    glass.transparency = 1.0f;
+    glass.ior = 1.5f;
+    glass.specular = Color(0.5f);
+    glass.shininess = 50.0f;
+    scene.add_object(std::make_shared<Box>(Vec3(-5, -0.5f, -5), Vec3(5, 0.5f, 5)), scene.add_material(glass));
+    scene.add_light(std::make_unique<PointLight>(Vec3(0, 10, 0), Color(1.0f), Falloff::None));
+    const RenderScene prepared(std::move(scene));
+    // Depth 0: no reflection or refraction, only what the surface itself adds.
+    expect_color_near(radiance(prepared, Ray({0, 5, 0}, {0, -1, 0}), 0), Color(0.5f), 1e-5f);
+}
+
 TEST(WhittedRadiance, TotalInternalReflectionKeepsLightInside) {
     // A ray inside glass meeting the surface beyond the critical angle is reflected whole,
     // so none of the (white) background outside reaches it.

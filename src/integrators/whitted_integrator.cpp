@@ -200,8 +200,9 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     // Glossy samples to trace from here: glossy_samples at the first rough surface, one below it.
     const uint32_t glossy_count =
         bsdf.has_glossy_lobes() && depth < max_depth_ ? (context.below_glossy ? 1 : glossy_samples_) : 0;
-    // A clear dielectric (t = 1) takes no direct light (handout §6.2); a rough one's glossy lobes do.
-    if (t < 1.0f || bsdf.has_glossy_lobes())
+    // A clear dielectric (t = 1) takes no diffuse light (handout §6.2); its highlight and a
+    // rough one's glossy lobes do.
+    if (t < 1.0f || bsdf.has_smooth_lobes())
         radiance += direct_light<Record>(scene, bsdf, si, sp.ng, glossy_count, context);
     if (depth >= max_depth_) return radiance;
 

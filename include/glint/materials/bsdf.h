@@ -101,7 +101,9 @@ public:
         : n_(n), ng_(ng), wo_(wo) {
         const float t = std::clamp(m.transparency, 0.0f, 1.0f);
         diffuse_ = at.diffuse * (1.0f - t);
-        highlight_ = m.specular * (1.0f - t);
+        // The highlight is the surface's, not the opaque layer's: glass shows it too, as in
+        // the seminar and POV-Ray (its `phong` on a clear finish).
+        highlight_ = m.specular;
         shininess_ = m.shininess;
 
         const bool rough = at.roughness > 0.0f;
