@@ -55,10 +55,14 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
     if (path.empty()) {
         if (!opt.camera.empty())
             throw std::invalid_argument("--camera picks a camera of a glTF file; the built-in scene is not one");
+        if (!opt.up.empty())
+            throw std::invalid_argument("--up orients the automatic camera of a mesh or glTF file; the built-in "
+                                        "scene has its own camera");
         source.loaded.scene = make_spheres_scene();
         source.loaded.settings.samples_per_axis = 2;
     } else {
-        source = load_scene_file(path, SceneFileOptions{opt.camera, shutter});
+        const std::optional<UpAxis> up = opt.up.empty() ? std::nullopt : parse_up_axis(opt.up);
+        source = load_scene_file(path, SceneFileOptions{opt.camera, shutter, up});
     }
     if (opt.aperture || opt.focus) {
         Camera& camera = source.loaded.scene.camera;
@@ -83,6 +87,9 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
 
 void add_scene_options(CLI::App* cmd, SceneOptions& opt) {
     cmd->add_option("--camera", opt.camera, "glTF camera to render through: name or index (default: the first)");
+    cmd->add_option("--up", opt.up,
+                    "Up axis of a mesh or glTF file's automatic camera: x, y (default) or z (scans, CAD)")
+        ->check(CLI::IsMember({"x", "y", "z"}));
     cmd->add_option("--aperture", opt.aperture,
                     "Lens aperture radius in world units: depth of field (0 = pinhole, the default)");
     cmd->add_option("--focus", opt.focus, "Distance to the plane of focus in world units (default: the scene's)");

@@ -23,6 +23,8 @@ struct SceneOptions {
     /// --shutter OPEN,CLOSE and --time T (an instant, [T, T]), in scene time.
     std::optional<std::string> shutter;
     std::optional<float> time;
+    /// --up x|y|z: the up axis of a mesh or glTF file's automatic camera.
+    std::string up;
 };
 
 /// What `render` and `info` load: a scene file, or the built-in scene.
@@ -32,8 +34,8 @@ using SceneSource = SceneFile;
 /// environment options. Throws SceneError, ImageError or std::invalid_argument.
 [[nodiscard]] SceneSource load_scene(const std::string& path, const SceneOptions& options);
 
-/// Add --camera, --aperture, --focus, --shutter, --time, --env, --env-kind, --env-rotation
-/// and --env-intensity to `command`.
+/// Add --camera, --up, --aperture, --focus, --shutter, --time, --env, --env-kind,
+/// --env-rotation and --env-intensity to `command`.
 void add_scene_options(CLI::App* command, SceneOptions& options);
 
 }  // namespace glint::app

@@ -21,7 +21,7 @@ SceneFile load_scene_file(const std::filesystem::path& path, const SceneFileOpti
     const std::string ext = lower_case_extension(path);
     SceneFile file;
     if (ext == ".gltf" || ext == ".glb") {
-        GltfScene gltf = load_gltf_scene(path, GltfOptions{options.camera, options.shutter});
+        GltfScene gltf = load_gltf_scene(path, GltfOptions{options.camera, options.shutter, options.up.value_or(UpAxis::Y)});
         file.loaded = std::move(gltf.loaded);
         file.default_lighting = gltf.report.default_lighting;
         file.gltf = std::move(gltf.report);
@@ -31,9 +31,11 @@ SceneFile load_scene_file(const std::filesystem::path& path, const SceneFileOpti
         throw SceneError(path.string() + ": a camera was named (" + options.camera +
                          "), but only glTF files have cameras to choose from");
     if (ext == ".toml") {
+        if (options.up)
+            throw SceneError(path.string() + ": an up axis was given (--up), but a TOML scene places its own camera");
         file.loaded = load_toml_scene(path);
     } else if (std::find(kMeshExtensions.begin(), kMeshExtensions.end(), ext) != kMeshExtensions.end()) {
-        file.loaded = load_mesh_scene(path);
+        file.loaded = load_mesh_scene(path, options.up.value_or(UpAxis::Y));
         file.default_lighting = true;
     } else {
         throw SceneError(path.string() + ": unknown scene format '" + ext +

@@ -1,3 +1,4 @@
+#include "glint/scene/asset_defaults.h"
 #include "glint/scene/camera.h"
 #include "glint/math/constants.h"
 
@@ -70,4 +71,26 @@ TEST(Camera, ProjectFindsThePixelWhoseRayPassesThroughAPoint) {
             EXPECT_NEAR(back->y, y, 2e-3f);
         }
     EXPECT_FALSE(cameras[0].project({30, 30, 30}, 640, 480).has_value()) << "behind the eye";
+}
+
+TEST(FramingCamera, StandsTheUpAxisUprightOnScreen) {
+    // A column 4 tall along the up axis and 0.5 wide: its top must project above its bottom,
+    // on the same column of the image, with both ends in view.
+    const std::pair<glint::UpAxis, glint::Vec3> axes[] = {
+        {glint::UpAxis::X, {1, 0, 0}}, {glint::UpAxis::Y, {0, 1, 0}}, {glint::UpAxis::Z, {0, 0, 1}}};
+    for (const auto& [axis, up] : axes) {
+        const glint::Vec3 centre(3, -1, 2);
+        const glint::Vec3 half = up * 2.0f + (glint::Vec3(1.0f) - up) * 0.25f;
+        const glint::Camera camera =
+            glint::framing_camera(glint::Bounds3(centre - half, centre + half), 4.0f / 3.0f, "column.ply", axis);
+        const std::optional<glint::Vec2> top = camera.project(centre + up * 2.0f, 640, 480);
+        const std::optional<glint::Vec2> bottom = camera.project(centre - up * 2.0f, 640, 480);
+        ASSERT_TRUE(top && bottom);
+        EXPECT_LT(top->y, bottom->y - 200.0f) << "the column stands upright and tall";
+        EXPECT_NEAR(top->x, bottom->x, 1.0f);
+        EXPECT_GT(top->y, 0.0f);
+        EXPECT_LT(bottom->y, 480.0f);
+    }
+    EXPECT_EQ(glint::parse_up_axis("z"), glint::UpAxis::Z);
+    EXPECT_FALSE(glint::parse_up_axis("-z"));
 }

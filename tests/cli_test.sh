@@ -125,8 +125,14 @@ check_refused "--adaptive-threshold: expected a positive relative error" --adapt
 check_refused "--shutter: expected finite times with CLOSE at or after OPEN; got '1,0'" --shutter 1,0
 check_refused "--shutter: expected OPEN,CLOSE (two times, e.g. 0,0.5); got '0.5'" --shutter 0.5
 check_refused "--time and --shutter: expected one of them, not both" --time 0 --shutter 0,1
+check_refused "--up orients the automatic camera of a mesh or glTF file" --up z
+check_refused "--up: w not in {x,y,z}" --up w
 check_refused "--exposure: expected a number of stops or 'auto'; got 'bright'" --exposure bright
 check_refused "--tonemap: expected none, clamp, aces, agx or pbr-neutral; got 'filmic'" --tonemap filmic
+# --up z turns a mesh's automatic camera for z-up files; a TOML scene places its own camera.
+"$glint" render "$scenes/../tests/data/icosphere.ply" --up z --width 32 --height 24 -o up.png -q || fail "--up z failed"
+if "$glint" render "$scenes/spheres.toml" --up z -o up_toml.png -q 2>err.txt; then fail "--up on a TOML scene accepted"; fi
+grep -q "a TOML scene places its own camera" err.txt || fail "--up on TOML: $(cat err.txt)"
 # Display transforms: a glTF file is tone mapped with PBR Neutral unless told otherwise, a
 # TOML scene is not; --exposure auto says the stops it chose; EXR output keeps radiance.
 out=$("$glint" render "$scenes/../tests/data/animated_quads.gltf" --width 32 --height 24 -o quads.png 2>/dev/null) ||

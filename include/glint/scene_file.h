@@ -19,6 +19,9 @@ struct SceneFileOptions {
     /// The shutter the scene is rendered with (--time, --shutter): glTF files pose their
     /// animated nodes over it (GltfOptions::shutter); other formats ignore it.
     std::optional<Shutter> shutter = std::nullopt;
+    /// The up axis for the automatic camera of a mesh or glTF file (--up); +y when unset.
+    /// Naming one for a TOML scene, which places its own camera, is an error.
+    std::optional<UpAxis> up = std::nullopt;
 };
 
 /// A loaded scene file and what its loader found out about it.

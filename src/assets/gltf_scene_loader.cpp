@@ -212,7 +212,8 @@ void choose_camera(const std::filesystem::path& path, const GltfOptions& options
             settings.height = std::max(1u, uint32_t(std::lround(float(settings.width) / chosen.aspect)));
         notes.mapped("camera: '" + chosen.name + "' (" + std::to_string(report.cameras.size()) + " in the file)");
     } else {
-        scene.camera = framing_camera(scene.world_bounds(), float(settings.width) / float(settings.height), path);
+        scene.camera =
+            framing_camera(scene.world_bounds(), float(settings.width) / float(settings.height), path, options.up);
         notes.mapped("camera: none in the file; automatic camera framing the scene's bounds");
     }
 }

@@ -149,14 +149,14 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     return result;
 }
 
-LoadedScene load_mesh_scene(const std::filesystem::path& path) {
+LoadedScene load_mesh_scene(const std::filesystem::path& path, UpAxis up) {
     LoadedScene loaded;
     MeshCache cache;
     MeshImportResult result = import_mesh_file(loaded.scene, path, Transform(), std::nullopt, cache);
     loaded.warnings = std::move(result.warnings);
     loaded.settings.width = 640;
     loaded.settings.height = 480;
-    loaded.scene.camera = framing_camera(loaded.scene.world_bounds(), 640.0f / 480.0f, path);
+    loaded.scene.camera = framing_camera(loaded.scene.world_bounds(), 640.0f / 480.0f, path, up);
     add_default_lighting(loaded.scene);
     return loaded;
 }

@@ -11,7 +11,23 @@
 
 namespace glint {
 
-Camera framing_camera(const Bounds3& bounds, float aspect, const std::filesystem::path& file) {
+namespace {
+
+/// Where the automatic camera stands, relative to the centre (scaled to the distance).
+constexpr double kFromFrontYUp[3] = {0.0, 0.35, 1.0};
+constexpr double kFromFrontZUp[3] = {0.0, -1.0, 0.35};
+constexpr double kFromFrontXUp[3] = {0.35, 0.0, 1.0};
+
+}  // namespace
+
+std::optional<UpAxis> parse_up_axis(std::string_view name) {
+    if (name == "x") return UpAxis::X;
+    if (name == "y") return UpAxis::Y;
+    if (name == "z") return UpAxis::Z;
+    return std::nullopt;
+}
+
+Camera framing_camera(const Bounds3& bounds, float aspect, const std::filesystem::path& file, UpAxis up) {
     // In double precision: a float diagonal of finite but huge bounds overflows.
     double center[3] = {0.0, 0.0, 0.0}, diagonal_squared = 0.0, center_extent = 0.0;
     if (!bounds.empty())
@@ -29,7 +45,10 @@ Camera framing_camera(const Bounds3& bounds, float aspect, const std::filesystem
     const double half_vertical = double(vertical_fov) * std::numbers::pi / 180.0 * 0.5;
     const double half_horizontal = std::atan(std::tan(half_vertical) * double(aspect));
     const double distance = 1.05 * radius / std::sin(std::min(half_vertical, half_horizontal));
-    const double offset[3] = {0.0, 0.35, 1.0};
+    // From the front, raised by 0.35 along the up axis.
+    const double(&offset)[3] = up == UpAxis::Y   ? kFromFrontYUp
+                               : up == UpAxis::Z ? kFromFrontZUp
+                                                 : kFromFrontXUp;
     const double offset_length = std::sqrt(0.35 * 0.35 + 1.0);
     Vec3 eye, target;
     for (int axis = 0; axis < 3; ++axis) {
@@ -43,7 +62,8 @@ Camera framing_camera(const Bounds3& bounds, float aspect, const std::filesystem
         eye[axis] = float(e);
         target[axis] = float(center[axis]);
     }
-    return Camera::perspective(eye, target, Vec3(0.0f, 1.0f, 0.0f), vertical_fov);
+    const Vec3 up_vector = up == UpAxis::Y ? Vec3(0, 1, 0) : up == UpAxis::Z ? Vec3(0, 0, 1) : Vec3(1, 0, 0);
+    return Camera::perspective(eye, target, up_vector, vertical_fov);
 }
 
 void add_default_lighting(Scene& scene) {

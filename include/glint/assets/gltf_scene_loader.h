@@ -3,6 +3,7 @@
 /// hierarchy through assimp, cameras, KHR_lights_punctual and materials from the file's
 /// JSON. docs/assets.md lists what maps to what; docs/units.md the light units.
 
+#include "glint/scene/asset_defaults.h"
 #include "glint/scene/loaded_scene.h"
 
 #include <filesystem>
@@ -20,6 +21,8 @@ struct GltfOptions {
     /// posed by them, and objects that move while it is open get motion keys (blur). Without
     /// one, animations are ignored and nodes keep their rest transforms.
     std::optional<Shutter> shutter = std::nullopt;
+    /// The up axis of the automatic camera, for a file without cameras (glTF says +y).
+    UpAxis up = UpAxis::Y;
 };
 
 /// A camera the file places in its scene.

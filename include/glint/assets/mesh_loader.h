@@ -3,6 +3,7 @@
 
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/math/transform.h"
+#include "glint/scene/asset_defaults.h"
 #include "glint/scene/loaded_scene.h"
 #include "glint/scene/scene.h"
 
@@ -71,6 +72,6 @@ private:
 
 /// A bare mesh file (PLY, OBJ, STL, FBX...) as a scene: its meshes and materials, a framing
 /// camera and the default lighting, 640×480. Throws SceneError.
-[[nodiscard]] LoadedScene load_mesh_scene(const std::filesystem::path& path);
+[[nodiscard]] LoadedScene load_mesh_scene(const std::filesystem::path& path, UpAxis up = UpAxis::Y);
 
 }  // namespace glint
