@@ -419,7 +419,52 @@ material = "leaf"
     }
 }
 
-TEST(TomlSceneErrors, AlphaTextureOnAShapeThatCannotBeCutOut) {
+// Every shape cuts out, not only meshes: a sphere whose near side is clear is hit on its far
+// side, a quad like the mesh above.
+TEST(TomlScene, AlphaTextureCutsOutAnalyticShapes) {
+    LoadedScene s = load(R"(
+[[textures]]
+name = "half"
+type = "image"
+file = "../tests/data/left_opaque_right_clear.png"
+wrap = "clamp"
+[[materials]]
+name = "leaf"
+alpha_texture = "half"
+[[objects]]
+type = "sphere"
+radius = 1
+material = "leaf"
+[[objects]]
+type = "quad"
+corner = [0, 0, 3]
+edge_u = [2, 0, 0]
+edge_v = [0, 0, -1]
+material = "leaf"
+)");
+    const RenderScene scene(std::move(s.scene));
+    // The sphere's u is its azimuth from +x / 2π: z > 0 (u < 0.5) opaque, z < 0 clear.
+    const float far_side = 5.0f + std::sqrt(1.0f - 0.09f);
+    Ray from_back(Vec3(0.3f, 0.0f, -5.0f), Vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f);
+    Hit hit;
+    ASSERT_TRUE(scene.intersect(from_back, hit));
+    EXPECT_NEAR(from_back.tmax, far_side, 1e-4f) << "the clear near side is stepped over";
+    Ray from_front(Vec3(0.3f, 0.0f, 2.5f), Vec3(0.0f, 0.0f, -1.0f), 0.0f, 10.0f);
+    ASSERT_TRUE(scene.intersect(from_front, hit));
+    EXPECT_NEAR(from_front.tmax, 2.5f - std::sqrt(1.0f - 0.09f), 1e-4f);
+    // A ray grazing only the clear half passes; shadow rays agree.
+    EXPECT_FALSE(scene.occluded(Ray(Vec3(0.3f, 0.0f, -5.0f), Vec3(0.0f, 0.0f, 1.0f), 0.0f, 4.5f)));
+    EXPECT_TRUE(scene.occluded(Ray(Vec3(0.3f, 0.0f, -5.0f), Vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f)));
+    // The quad at z in [2, 3]: its u runs along x over [0, 2].
+    for (const float x : {0.2f, 0.6f, 1.4f, 1.8f}) {
+        const bool opaque = x < 1.0f;
+        Ray ray(Vec3(x, 1.0f, 2.5f), Vec3(0.0f, -1.0f, 0.0f));
+        EXPECT_EQ(scene.intersect(ray, hit), opaque) << "x = " << x;
+        EXPECT_EQ(scene.occluded(Ray(Vec3(x, 1.0f, 2.5f), Vec3(0.0f, -1.0f, 0.0f))), opaque) << "x = " << x;
+    }
+}
+
+TEST(TomlSceneErrors, AlphaTextureOnAMeshWithoutUvs) {
     expect_error(R"(
 [[textures]]
 name = "half"
@@ -429,11 +474,12 @@ file = "../tests/data/left_opaque_right_clear.png"
 name = "leaf"
 alpha_texture = "half"
 [[objects]]
-type = "sphere"
-radius = 1
+type = "mesh"
+positions = [[0, 0, 0], [2, 0, 0], [2, 0, -1]]
+indices = [[0, 1, 2]]
 material = "leaf"
 )",
-                 "test.toml:12:12:", {"objects[0].material", "cuts out", "triangle meshes with uvs"});
+                 "test.toml:13:12:", {"objects[0].material", "cuts out", "mesh does not have"});
 }
 
 TEST(TomlScene, HandoutRefractionIndex) {

@@ -1,6 +1,7 @@
 #include "object_builder.h"
 
 #include "glint/assets/mesh_loader.h"
+#include "glint/geometry/cutout_shape.h"
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/scene/scene.h"
 #include "glint/scene_format/did_you_mean.h"
@@ -65,18 +66,20 @@ const std::vector<uint32_t>* vertex_materials(const Shape& shape) {
 }
 
 /// A material's `alpha_texture` cuts its object out where the texture's alpha is below
-/// `alpha_cutoff`. The test runs inside the mesh's own traversal (so the closest kept hit
-/// is found), which only triangle meshes with uvs have; other shapes are refused rather
-/// than drawn uncut.
-void apply_cutout(const ParamTable& t, Shape& shape, const Material& m) {
-    auto* mesh = dynamic_cast<TriangleMesh*>(&shape);
-    if (!mesh || mesh->data().uvs.empty())
-        t.fail("material", fmt::format("a material without alpha_texture for this shape: material '{}' cuts out, which "
-                                       "only triangle meshes with uvs can (type \"mesh\" or \"triangle\" with uvs)",
+/// `alpha_cutoff`. A triangle mesh tests it inside its own traversal (so the closest kept
+/// hit is found at no extra cost); it needs uvs, and a mesh without them is refused rather
+/// than drawn uncut. Every other shape is wrapped in a CutoutShape.
+std::shared_ptr<Shape> apply_cutout(const ParamTable& t, std::shared_ptr<Shape> shape, const Material& m) {
+    auto* mesh = dynamic_cast<TriangleMesh*>(shape.get());
+    if (!mesh) return std::make_shared<CutoutShape>(std::move(shape), m.alpha_texture, m.alpha_cutoff);
+    if (mesh->data().uvs.empty())
+        t.fail("material", fmt::format("a material without alpha_texture for a mesh without uvs: material '{}' cuts "
+                                       "out by texture coordinates, which this mesh does not have",
                                        m.name));
     if (mesh->alpha_mask() && mesh->alpha_mask() != m.alpha_texture)
         t.fail("material", "the same alpha_texture as the other objects that place this shape");
     mesh->set_alpha_mask(m.alpha_texture, m.alpha_cutoff);
+    return shape;
 }
 
 void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& context) {
@@ -108,7 +111,8 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
     const ParamValue* m = per_vertex ? t.find("material") : &t.require("material", "a material name");
     if (m && per_vertex) t.fail("material", "either one material or per-vertex materials, not both");
     const uint32_t material = m ? context.material(*m, t.name_of("material")) : per_vertex->front();
-    if (context.scene().material(material).alpha_texture) apply_cutout(t, *shape, context.scene().material(material));
+    if (context.scene().material(material).alpha_texture)
+        shape = apply_cutout(t, std::move(shape), context.scene().material(material));
     const std::string name = t.string("name", "");
     t.reject_unknown_keys();
     const uint32_t object = context.scene().add_object(std::move(shape), material, transform, name);
