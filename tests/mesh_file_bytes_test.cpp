@@ -33,6 +33,8 @@ glint::MeshFile sample_file() {
     red.roughness = 0.25f;
     red.base_color = {0.9f, 0.5f, 0.2f};
     red.metallic = 0.75f;
+    red.absorption = glint::Color(0.5f, 1.0f, 2.0f);
+    red.dielectric_f0 = glint::Color(0.02f);
     file.materials = {glint::Material{}, red};
     auto image = std::make_shared<glint::Image>(2, 1, 3);
     image->pixels = {1, 2, 3, 4, 5, 6};
@@ -81,6 +83,8 @@ TEST(MeshFileBytes, EverythingComesBackAsItWas) {
     EXPECT_EQ(back.materials[1].roughness, 0.25f);
     EXPECT_EQ(back.materials[1].base_color, glint::Color(0.9f, 0.5f, 0.2f));
     EXPECT_EQ(back.materials[1].metallic, 0.75f);
+    EXPECT_EQ(back.materials[1].absorption, glint::Color(0.5f, 1.0f, 2.0f));
+    EXPECT_EQ(back.materials[1].dielectric_f0, glint::Color(0.02f));
     ASSERT_EQ(back.material_images.size(), 2u);
     EXPECT_EQ(back.material_images[0], nullptr);
     ASSERT_NE(back.material_images[1], nullptr);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace glint::gltf {
 
@@ -28,7 +29,8 @@ const nlohmann::json& extension(const nlohmann::json& material, const char* name
 
 bool is_mapped_material_extension(const std::string& name) {
     return name == "KHR_materials_transmission" || name == "KHR_materials_ior" ||
-           name == "KHR_materials_emissive_strength";
+           name == "KHR_materials_emissive_strength" || name == "KHR_materials_volume" ||
+           name == "KHR_materials_specular";
 }
 
 void MaterialConverter::convert_all() {
@@ -91,6 +93,35 @@ const Texture* MaterialConverter::texture(const nlohmann::json& info, const std:
     return result;
 }
 
+Color MaterialConverter::dielectric_f0(const nlohmann::json& material, float ior, const std::string& name) {
+    // KHR_materials_ior: F0 = ((ior − 1)/(ior + 1))², 4 % at the default 1.5 (in double, so
+    // that 1.5 gives the float 0.04 exactly, as a file without the extension does).
+    const double r = (double(ior) - 1.0) / (double(ior) + 1.0);
+    // KHR_materials_specular: tinted by specularColorFactor (clamped to 1) and scaled by
+    // specularFactor; the textures that vary them are not read.
+    const auto& specular = extension(material, "KHR_materials_specular");
+    const Color tint = color3(specular, "specularColorFactor", Color(1.0f));
+    const float factor = std::clamp(specular.value("specularFactor", 1.0f), 0.0f, 1.0f);
+    if (specular.contains("specularTexture") || specular.contains("specularColorTexture"))
+        notes_.ignored("KHR_materials_specular textures (factors used)", name);
+    const Color f0 = Color(float(r * r)) * tint;
+    return Color(std::min(f0.r, 1.0f), std::min(f0.g, 1.0f), std::min(f0.b, 1.0f)) * factor;
+}
+
+Color MaterialConverter::volume_absorption(const nlohmann::json& material, const std::string& name) {
+    // KHR_materials_volume: white light keeps attenuationColor after attenuationDistance
+    // inside, so σa = −ln(attenuationColor) / attenuationDistance (Beer-Lambert). The
+    // thickness the extension gives rasterizers is the real geometry's here.
+    const auto& volume = extension(material, "KHR_materials_volume");
+    const float distance = volume.value("attenuationDistance", std::numeric_limits<float>::infinity());
+    if (volume.contains("thicknessTexture")) notes_.ignored("KHR_materials_volume thicknessTexture (ray-traced thickness used)", name);
+    if (!(distance > 0.0f) || !std::isfinite(distance)) return Color(0.0f);
+    const Color left = color3(volume, "attenuationColor", Color(1.0f));
+    // A channel that keeps nothing absorbs as strongly as one that keeps 1e-6 of it.
+    auto sigma = [&](float kept) { return -std::log(std::clamp(kept, 1e-6f, 1.0f)) / distance; };
+    return {sigma(left.r), sigma(left.g), sigma(left.b)};
+}
+
 MaterialInfo MaterialConverter::convert(int index) {
     static const nlohmann::json default_material = nlohmann::json::object();
     const nlohmann::json& j = index < 0 ? default_material : doc_.json.at("materials").at(std::size_t(index));
@@ -113,7 +144,10 @@ MaterialInfo MaterialConverter::convert(int index) {
     // Metallic-roughness on Glint's lobes (glTF 2.0, Appendix B; materials/metallic_roughness.h):
     // one GGX lobe of the file's roughness (alpha = roughness², as glTF defines it) with Schlick
     // F0 = mix(0.04, base, metallic), beside the diffuse base·(1 − metallic). Roughness 0 is a mirror.
-    const MetallicRoughnessLobes lobes = metallic_roughness_lobes(base, metallic);
+    m.ior = extension(j, "KHR_materials_ior").value("ior", 1.5f);
+    if (!(m.ior >= 1.0f)) m.ior = 1.0f;  // ior 0 ("no refraction") is not a physical index
+    m.dielectric_f0 = dielectric_f0(j, m.ior, name);
+    const MetallicRoughnessLobes lobes = metallic_roughness_lobes(base, metallic, m.dielectric_f0);
     m.diffuse = lobes.diffuse;
     m.ambient = m.diffuse;
     m.texture = base_texture;
@@ -143,8 +177,7 @@ MaterialInfo MaterialConverter::convert(int index) {
     const auto& transmission = extension(j, "KHR_materials_transmission");
     m.transparency = std::clamp(transmission.value("transmissionFactor", 0.0f), 0.0f, 1.0f);
     if (transmission.contains("transmissionTexture")) notes_.ignored("transmissionTexture (factor used)", name);
-    m.ior = extension(j, "KHR_materials_ior").value("ior", 1.5f);
-    if (!(m.ior >= 1.0f)) m.ior = 1.0f;  // ior 0 ("no refraction") is not a physical index
+    m.absorption = volume_absorption(j, name);
 
     MaterialInfo info;
     info.double_sided = j.value("doubleSided", false);

@@ -45,6 +45,10 @@ public:
 
 private:
     MaterialInfo convert(int index);
+    /// The non-metal part's F0 from KHR_materials_ior and KHR_materials_specular.
+    Color dielectric_f0(const nlohmann::json& material, float ior, const std::string& name);
+    /// σa from KHR_materials_volume (black without it).
+    Color volume_absorption(const nlohmann::json& material, const std::string& name);
     /// Texture `info` ({"index", "texCoord"}) as a scene texture, its image decoded with
     /// `encoding` (sRGB colour, or linear data such as metalness and roughness); null (with a
     /// warning) when it cannot be decoded.

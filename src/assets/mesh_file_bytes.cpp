@@ -12,7 +12,7 @@ namespace {
 // A field added to Material must be handed over too (or be a texture, which the parent
 // makes from material_images): this fails to compile until write_material/read_material
 // have been looked at.
-static_assert(sizeof(Material) == 168, "Material changed: update write_material and read_material");
+static_assert(sizeof(Material) == 192, "Material changed: update write_material and read_material");
 
 void write_material(ByteWriter& w, const Material& m) {
     w.text(m.name);
@@ -29,6 +29,8 @@ void write_material(ByteWriter& w, const Material& m) {
     w.value(m.roughness);
     w.value(m.base_color);
     w.value(m.metallic);
+    w.value(m.absorption);
+    w.value(m.dielectric_f0);
 }
 
 Material read_material(ByteReader& r) {
@@ -47,6 +49,8 @@ Material read_material(ByteReader& r) {
     m.roughness = r.value<float>();
     m.base_color = r.value<Color>();
     m.metallic = r.value<float>();
+    m.absorption = r.value<Color>();
+    m.dielectric_f0 = r.value<Color>();
     return m;
 }
 

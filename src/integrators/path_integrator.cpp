@@ -1,5 +1,6 @@
 #include "glint/integrators/path_integrator.h"
 
+#include "glint/integrators/medium_absorption.h"
 #include "glint/integrators/shading_point.h"
 #include "glint/math/offset_ray.h"
 #include "glint/scene/render_scene.h"
@@ -66,6 +67,8 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
             break;
         }
         const SurfaceInteraction si = scene.interaction(r, hit);
+        // Inside an absorbing dielectric the path loses exp(−σa·d) on the way here.
+        throughput *= transmittance(scene, media, r.tmax);
         // Only hits on per-vertex materials pay for a blended copy.
         std::optional<Material> blended;
         if (si.blends_materials) blended = blended_material(scene, si);

@@ -1,5 +1,6 @@
 #include "glint/integrators/whitted_integrator.h"
 
+#include "glint/integrators/medium_absorption.h"
 #include "glint/integrators/shading_point.h"
 #include "glint/lights/area_light.h"
 #include "glint/math/offset_ray.h"
@@ -168,10 +169,12 @@ Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uin
 
     const SurfaceInteraction si = scene.interaction(r, hit);
     if constexpr (Record) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], Vec3());
+    // Inside an absorbing dielectric the radiance from the hit loses exp(−σa·d) on the way.
+    const Color kept = transmittance(scene, media, r.tmax);
     // Only hits on per-vertex materials build a (blended) Material.
     if (si.blends_materials)
-        return shade<Record>(scene, ray, hit.object, si, blended_material(scene, si), depth, media, context);
-    return shade<Record>(scene, ray, hit.object, si, scene.material(si.materials[0]), depth, media, context);
+        return kept * shade<Record>(scene, ray, hit.object, si, blended_material(scene, si), depth, media, context);
+    return kept * shade<Record>(scene, ray, hit.object, si, scene.material(si.materials[0]), depth, media, context);
 }
 
 template <bool Record>

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace glint {
 
 namespace {
@@ -12,6 +14,24 @@ float unit_interval(const ParamTable& t, std::string_view key, float fallback, s
     const float x = t.number(key, fallback);
     if (x < 0.0f || x > 1.0f) t.fail(key, fmt::format("{} from 0 to 1", what));
     return x;
+}
+
+/// `absorption` (σa per scene unit), or `attenuation_color` (what is left of white light
+/// after `attenuation_distance`, default 1 scene unit; KHR_materials_volume's terms).
+void read_absorption(const ParamTable& t, Material& m) {
+    if (t.find("absorption") && t.find("attenuation_color"))
+        t.fail("attenuation_color", "either absorption or attenuation_color, not both");
+    m.absorption = t.color("absorption", m.absorption);
+    if (t.find("attenuation_distance") && !t.find("attenuation_color"))
+        t.fail("attenuation_distance", "attenuation_color beside it (the colour left after this distance)");
+    if (!t.find("attenuation_color")) return;
+    const Color left = t.color("attenuation_color", Color(1.0f));
+    const float distance = t.number("attenuation_distance", 1.0f);
+    if (!(distance > 0.0f)) t.fail("attenuation_distance", "a positive distance in scene units");
+    for (int c = 0; c < 3; ++c)
+        if (!(left[c] > 0.0f && left[c] <= 1.0f))
+            t.fail("attenuation_color", "a colour with components in (0, 1]: what is left of white light");
+    m.absorption = {-std::log(left.r) / distance, -std::log(left.g) / distance, -std::log(left.b) / distance};
 }
 
 }  // namespace
@@ -31,6 +51,8 @@ Material blend(const Material& a, const Material& b, const Material& c, float wa
     m.roughness = mix(&Material::roughness);
     m.base_color = mix(&Material::base_color);
     m.metallic = mix(&Material::metallic);
+    m.absorption = mix(&Material::absorption);
+    m.dielectric_f0 = mix(&Material::dielectric_f0);
     return m;
 }
 
@@ -73,6 +95,7 @@ Material Material::standard_from_params(const ParamTable& t, const BuildContext&
             if (m.ior == 0.0f) m.ior = 1.0f;
         }
     }
+    read_absorption(t, m);
     return m;
 }
 

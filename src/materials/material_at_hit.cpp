@@ -16,7 +16,7 @@ MaterialAtHit metallic_roughness_at(const Material& m, const Color& base_texture
     const float metallic = std::clamp(m.metallic * texel.b, 0.0f, 1.0f);
     const float roughness = std::clamp(m.roughness * texel.g, 0.0f, 1.0f);
     // The base colour is factor × texture (§3.9.2), so its texture tints F0 here as well as kd.
-    const MetallicRoughnessLobes lobes = metallic_roughness_lobes(m.base_color * base_texture, metallic);
+    const MetallicRoughnessLobes lobes = metallic_roughness_lobes(m.base_color * base_texture, metallic, m.dielectric_f0);
     // glTF has no ambient reflectance; the loader makes ka = kd, and so does each hit.
     return {lobes.diffuse, lobes.diffuse, lobes.reflectivity, roughness};
 }

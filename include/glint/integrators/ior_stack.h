@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace glint {
 
@@ -18,6 +19,10 @@ public:
 
     /// Index of refraction of the medium the ray is currently in.
     [[nodiscard]] float current() const { return size_ == 0 ? ambient_ : entries_[size_ - 1].ior; }
+    /// The material whose medium the ray is in (the innermost entry); nullopt outside all.
+    [[nodiscard]] std::optional<uint32_t> current_medium() const {
+        return size_ == 0 ? std::nullopt : std::optional<uint32_t>(entries_[size_ - 1].material);
+    }
     /// Index on the far side when leaving `material` (the medium that encloses it).
     [[nodiscard]] float outside_of(uint32_t material) const;
     /// Stack after entering `material` with index `ior`.

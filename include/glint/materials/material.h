@@ -5,7 +5,8 @@
 ///   L = Le + (1 - t)·[ tex·(ka·La + Σ_i v_i·kd·E_i·max(N·L_i, 0))
 ///                      + Σ_i v_i·ks·(N·H_i)^s·E_i·max(N·L_i, 0) + kr·L_reflect ]
 ///          + t·[ F·L_reflect + (1 - F)·L_refract ]
-/// t = transparency, F = Schlick's Fresnel term for the interface, v_i = visibility of light i.
+/// t = transparency, F = Schlick's Fresnel term for the interface, v_i = visibility of light i;
+/// a ray inside a dielectric loses exp(−σa·d) over a distance d (`absorption`).
 /// The handout's opaque material is t = 0 with kr = its "specular" colour; its dielectric
 /// is t = 1. The seminar's reflectivity r and transparency τ are kr = r and t = τ.
 
@@ -39,6 +40,11 @@ struct Material {
     float transparency = 0.0f;
     /// Index of refraction of the dielectric.
     float ior = 1.5f;
+    /// σa, the Beer-Lambert absorption coefficient inside the dielectric, per scene unit:
+    /// light that crosses a distance d inside keeps exp(−σa·d) of itself, so a thick glass
+    /// tints more than a thin one. Black: clear. (KHR_materials_volume: σa =
+    /// −ln(attenuationColor) / attenuationDistance.)
+    Color absorption{0.0f};
     /// Le: emitted radiance. It lights other surfaces as an area light unless the scene's
     /// `emission_lights` is off (then it is only seen by rays that hit it).
     Color emission{0.0f};
@@ -60,6 +66,9 @@ struct Material {
     /// glTF's baseColorFactor and metallicFactor, which the texture above needs at each hit.
     Color base_color{1.0f};
     float metallic = 1.0f;
+    /// glTF's F0 of the non-metal part: ((ior − 1)/(ior + 1))² (0.04 at 1.5; KHR_materials_ior)
+    /// tinted by KHR_materials_specular's colour and scaled by its factor.
+    Color dielectric_f0{0.04f};
 
     [[nodiscard]] bool is_dielectric() const { return transparency > 0.0f; }
 

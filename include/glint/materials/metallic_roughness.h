@@ -17,8 +17,11 @@ struct MetallicRoughnessLobes {
     Color reflectivity;
 };
 
-[[nodiscard]] inline MetallicRoughnessLobes metallic_roughness_lobes(const Color& base, float metallic) {
-    return {base * (1.0f - metallic), lerp(metallic, Color(0.04f), base)};
+/// `dielectric_f0`: the non-metal part's F0, 4 % unless KHR_materials_ior or
+/// KHR_materials_specular change it (Material::dielectric_f0).
+[[nodiscard]] inline MetallicRoughnessLobes metallic_roughness_lobes(const Color& base, float metallic,
+                                                                     const Color& dielectric_f0 = Color(0.04f)) {
+    return {base * (1.0f - metallic), lerp(metallic, dielectric_f0, base)};
 }
 
 }  // namespace glint
