@@ -2,17 +2,27 @@
 
 #include "timing.h"
 
+#include "glint/geometry/triangle_mesh.h"
 #include "glint/scene/render_scene.h"
 
 #include <fmt/core.h>
 
 #include <map>
+#include <set>
 
 namespace glint::app {
 
 namespace {
 
 std::string megabytes(std::size_t bytes) { return fmt::format("{:.1f} MB", double(bytes) / (1024.0 * 1024.0)); }
+
+std::size_t meshes_with_vertex_colors(const Scene& scene) {
+    std::set<const TriangleMesh*> coloured;
+    for (const SceneObject& object : scene.objects())
+        if (const auto* mesh = dynamic_cast<const TriangleMesh*>(object.shape.get()); mesh && !mesh->data().colors.empty())
+            coloured.insert(mesh);
+    return coloured.size();
+}
 
 }  // namespace
 
@@ -33,6 +43,8 @@ int run_info(const std::string& path, const SceneOptions& opt) {
     fmt::print("file:        {}\n", path);
     fmt::print("objects:     {} ({} unique shapes)\n", stats.objects, stats.unique_shapes);
     fmt::print("triangles:   {} unique, {} instanced\n", stats.unique_triangles, stats.instanced_triangles);
+    if (const std::size_t coloured = meshes_with_vertex_colors(scene.description()); coloured > 0)
+        fmt::print("colours:     vertex colours on {} mesh(es), multiplying the base colour\n", coloured);
     fmt::print("materials:   {}\n", scene.description().materials().size());
     fmt::print("textures:    {}\n", scene.description().texture_count());
     fmt::print("lights:      {}{}{}\n", scene.all_lights().size(), lights.empty() ? "" : ": ", lights);

@@ -133,6 +133,9 @@ check_refused "--tonemap: expected none, clamp, aces, agx or pbr-neutral; got 'f
 "$glint" render "$scenes/../tests/data/icosphere.ply" --up z --width 32 --height 24 -o up.png -q || fail "--up z failed"
 if "$glint" render "$scenes/spheres.toml" --up z -o up_toml.png -q 2>err.txt; then fail "--up on a TOML scene accepted"; fi
 grep -q "a TOML scene places its own camera" err.txt || fail "--up on TOML: $(cat err.txt)"
+# glint info says when a mesh's vertex colours tint its material.
+"$glint" info "$scenes/../tests/data/vertex_colored_triangle.ply" | grep -q "colours:     vertex colours on 1 mesh" ||
+  fail "glint info does not report vertex colours"
 # Display transforms: a glTF file is tone mapped with PBR Neutral unless told otherwise, a
 # TOML scene is not; --exposure auto says the stops it chose; EXR output keeps radiance.
 out=$("$glint" render "$scenes/../tests/data/animated_quads.gltf" --width 32 --height 24 -o quads.png 2>/dev/null) ||

@@ -8,6 +8,7 @@
 
 #include "glint/diagnostics.h"
 #include "glint/image/image_io.h"
+#include "glint/math/color.h"
 #include "glint/util/file_extension.h"
 
 #include <assimp/material.h>
@@ -15,6 +16,7 @@
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -86,6 +88,22 @@ MeshData convert_mesh(const aiMesh* mesh, unsigned index, const std::filesystem:
         for (unsigned v = 0; v < n; ++v) {
             const Vec2 uv(mesh->mTextureCoords[0][v].x, mesh->mTextureCoords[0][v].y);
             data.uvs[v] = std::isfinite(uv.x) && std::isfinite(uv.y) ? uv : Vec2(0.0f, 0.0f);
+        }
+    }
+    if (mesh->mColors[0]) {
+        // glTF's COLOR_0 is linear (glTF 2.0 §3.7.2.1); PLY's 8-bit colours (and OBJ's, written
+        // from them) are display values, sRGB, as Blender and MeshLab read them.
+        const std::string ext = lower_case_extension(path);
+        const bool encoded = ext != ".gltf" && ext != ".glb";
+        data.colors.resize(n);
+        for (unsigned v = 0; v < n; ++v) {
+            const aiColor4D& c = mesh->mColors[0][v];
+            auto linear = [encoded](float x) {
+                if (!std::isfinite(x)) return 1.0f;
+                x = std::clamp(x, 0.0f, 1.0f);
+                return encoded ? srgb_to_linear(x) : x;
+            };
+            data.colors[v] = {linear(c.r), linear(c.g), linear(c.b)};
         }
     }
     data.indices.reserve(std::size_t(mesh->mNumFaces) * 3);

@@ -81,6 +81,7 @@ std::string to_bytes(const MeshFile& file) {
         w.array(data.indices);
         w.array(data.normals);
         w.array(data.uvs);
+        w.array(data.colors);
         w.array(data.vertex_materials);
     }
     w.array(file.mesh_materials);
@@ -128,6 +129,7 @@ MeshFile mesh_file_from_bytes(std::string_view bytes, const std::string& context
             data.indices = r.array<uint32_t>();
             data.normals = r.array<Vec3>();
             data.uvs = r.array<Vec2>();
+            data.colors = r.array<Color>();
             data.vertex_materials = r.array<uint32_t>();
             file.meshes.push_back(std::make_shared<TriangleMesh>(std::move(data), std::move(name)));
         }

@@ -37,6 +37,7 @@ TriangleMesh::TriangleMesh(MeshData data, std::string name) : data_(std::move(da
     };
     check_size(data_.normals.size(), "normals");
     check_size(data_.uvs.size(), "texture coordinates");
+    check_size(data_.colors.size(), "vertex colours");
     check_size(data_.vertex_materials.size(), "vertex materials");
     for (auto& n : data_.normals) {
         const float len = length(n);
@@ -123,6 +124,8 @@ void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteractio
     } else {
         si.uv = Vec2(b1, b2);
     }
+    if (!data_.colors.empty())
+        si.vertex_color = data_.colors[idx[0]] * b0 + data_.colors[idx[1]] * b1 + data_.colors[idx[2]] * b2;
     if (!data_.vertex_materials.empty()) {
         si.blends_materials = true;
         si.materials = {data_.vertex_materials[idx[0]], data_.vertex_materials[idx[1]], data_.vertex_materials[idx[2]]};
@@ -166,7 +169,7 @@ std::optional<ShapeSample> TriangleMesh::sample_area(Vec2 u) const {
 
 std::size_t TriangleMesh::memory_bytes() const {
     return data_.positions.size() * sizeof(Vec3) + data_.indices.size() * sizeof(uint32_t) +
-           data_.normals.size() * sizeof(Vec3) + data_.uvs.size() * sizeof(Vec2) +
+           data_.normals.size() * sizeof(Vec3) + data_.uvs.size() * sizeof(Vec2) + data_.colors.size() * sizeof(Color) +
            data_.vertex_materials.size() * sizeof(uint32_t) + bvh_.memory_bytes();
 }
 

@@ -5,6 +5,7 @@
 /// triangles). The full `SurfaceInteraction` is computed once, for the closest hit
 /// (the pbrt-v4 / Mitsuba 3 two-phase split).
 
+#include "glint/math/color.h"
 #include "glint/math/constants.h"
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
@@ -36,6 +37,8 @@ struct SurfaceInteraction {
     /// Unit interpolated normal, flipped if needed to lie on geometric_normal's side.
     Vec3 shading_normal;
     Vec2 uv;
+    /// The mesh's interpolated vertex colour (linear), white where it has none.
+    Color vertex_color{1.0f};
     /// True if the ray arrived from the side geometric_normal points to.
     bool front_face = true;
     /// Scene material index; with per-vertex materials, the three corners' materials

@@ -21,6 +21,9 @@ struct MeshData {
     std::vector<uint32_t> indices;
     std::vector<Vec3> normals;
     std::vector<Vec2> uvs;
+    /// Per-vertex colours (PLY red/green/blue, OBJ "v x y z r g b"), linear: they multiply
+    /// the material's base colour at a hit, interpolated with barycentrics.
+    std::vector<Color> colors;
     /// Per-vertex scene material indices, blended with barycentrics at a hit (handout §6.1.1).
     std::vector<uint32_t> vertex_materials;
 };
