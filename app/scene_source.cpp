@@ -97,8 +97,8 @@ void add_scene_options(CLI::App* cmd, SceneOptions& opt) {
                     "OPEN,CLOSE: when the shutter is open, in scene time (motion blur; default: the scene's)");
     cmd->add_option("--time", opt.time, "Render the instant T of scene time: no motion blur (the shutter [T, T])");
     cmd->add_option("--env", opt.env, "HDR environment map (background and reflections)")->check(CLI::ExistingFile);
-    cmd->add_option("--env-kind", opt.env_kind, "Environment layout (default: 2:1 equirect, 1:1 spheremap)")
-        ->check(CLI::IsMember({"equirect", "spheremap"}));
+    cmd->add_option("--env-kind", opt.env_kind, "Environment layout: equirect, spheremap or angmap (default: 2:1 equirect, 1:1 spheremap)")
+        ->check(CLI::IsMember({"equirect", "spheremap", "angmap", "angular"}));
     cmd->add_option("--env-rotation", opt.env_rotation, "Environment rotation about +y in degrees");
     cmd->add_option("--env-intensity", opt.env_intensity, "Environment radiance scale")->check(CLI::NonNegativeNumber);
 }

@@ -77,6 +77,11 @@ check_entry() {
       check_run "render --env $file" "$expected" error "$file" -- "$glint" render --env "$file" -o "$out/OUT.png" "${size[@]}"
       check_run "info --env $file" "$expected" error "$file" -- "$glint" info generated/ok.toml --env "$file"
       ;;
+    env-*)
+      local kind=${mode#env-}
+      check_run "render --env $file --env-kind $kind" "$expected" error "$file" -- "$glint" render --env "$file" --env-kind "$kind" -o "$out/OUT.png" "${size[@]}"
+      check_run "info --env $file --env-kind $kind" "$expected" error "$file" -- "$glint" info generated/ok.toml --env "$file" --env-kind "$kind"
+      ;;
     time)
       check_run "render $file --time 0" "$expected" error "$file" -- "$glint" render "$file" --time 0 -o "$out/OUT.png" "${size[@]}"
       check_run "info $file --time 0" "$expected" error "$file" -- "$glint" info "$file" --time 0

@@ -1,5 +1,5 @@
-// Environment maps: the six axis directions land on the right texels of equirectangular and
-// mirror-ball maps (docs/units.md, conventions in scene/background.h), rotation and scale,
+// Environment maps: the six axis directions land on the right texels of equirectangular,
+// mirror-ball and angular maps, uv ↔ direction round trips (docs/units.md, conventions in scene/background.h), rotation and scale,
 // and the shared HDR files load and agree with each other.
 
 #include "glint/image/image_io.h"
@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace {
 
@@ -94,10 +95,51 @@ TEST(EnvironmentLookup, RotationTurnsTheMapAboutYAndScaleMultiplies) {
     EXPECT_EQ(turned.evaluate(Vec3(-1, 0, 0)).r, 2.0f * plain.evaluate(Vec3(0, 0, -1)).r);
 }
 
+TEST(EnvironmentLookup, AngularMapAxesLandOnTheRightTexels) {
+    // 64×64 angular map (Debevec): the centre looks along -z, the radius is the angle from -z
+    // over π, so the axes ±x, ±y (90° away) land half way out and +z on the rim.
+    const auto bg = glint::Background::environment(glint::BackgroundKind::AngularMap, coordinate_image(64, 64));
+    auto pos = [](float unit) { return 32.0f * (1.0f + unit) - 0.5f; };  // [-1,1] → texel coordinate
+    expect_lookup(bg, Vec3(0, 0, -1), pos(0), pos(0));
+    expect_lookup(bg, Vec3(1, 0, 0), pos(0.5f), pos(0));
+    expect_lookup(bg, Vec3(-1, 0, 0), pos(-0.5f), pos(0));
+    expect_lookup(bg, Vec3(0, 1, 0), pos(0), pos(-0.5f));  // +y up: towards the top row
+    expect_lookup(bg, Vec3(0, -1, 0), pos(0), pos(0.5f));
+    expect_lookup(bg, normalize(Vec3(1, 0, -1)), pos(0.25f), pos(0));  // 45° from -z: a quarter out
+    expect_lookup(bg, Vec3(0, 0, 1), 63.0f, pos(0));                   // the rim (clamped at the border)
+}
+
+TEST(EnvironmentLookup, DirectionsInvertTheUvMapsAndRotation) {
+    const auto img = coordinate_image(64, 64);
+    for (const glint::BackgroundKind kind :
+         {glint::BackgroundKind::Equirectangular, glint::BackgroundKind::SphereMap, glint::BackgroundKind::AngularMap}) {
+        const auto bg = glint::Background::environment(kind, img, 37.0f);
+        for (Vec3 d : {Vec3(0.3f, -0.6f, 0.74f), Vec3(-0.5f, 0.3f, 0.8f), Vec3(0.2f, 0.9f, -0.5f),
+                       Vec3(-0.7f, -0.1f, -0.4f)}) {
+            d = normalize(d);
+            const std::optional<Vec3> back = bg.direction_of(bg.uv_of(d));
+            ASSERT_TRUE(back) << "direction " << d;
+            EXPECT_NEAR(length(*back - d), 0.0f, 1e-4f) << "direction " << d << " kind " << int(kind);
+        }
+    }
+    EXPECT_FALSE(glint::angular_map_direction(Vec2(0.02f, 0.02f))) << "a corner is off the disk";
+    EXPECT_FALSE(glint::sphere_map_direction(Vec2(0.98f, 0.03f))) << "a corner is off the disk";
+}
+
 TEST(EnvironmentKind, ParsesNames) {
     EXPECT_EQ(glint::parse_environment_kind("equirect"), glint::BackgroundKind::Equirectangular);
     EXPECT_EQ(glint::parse_environment_kind("spheremap"), glint::BackgroundKind::SphereMap);
+    EXPECT_EQ(glint::parse_environment_kind("angmap"), glint::BackgroundKind::AngularMap);
+    EXPECT_EQ(glint::parse_environment_kind("angular"), glint::BackgroundKind::AngularMap);
     EXPECT_FALSE(glint::parse_environment_kind("cubemap"));
+}
+
+TEST(EnvironmentKind, ShapeMustFitANamedLayout) {
+    EXPECT_FALSE(glint::environment_shape_problem(glint::BackgroundKind::Equirectangular, 64, 32));
+    EXPECT_TRUE(glint::environment_shape_problem(glint::BackgroundKind::Equirectangular, 64, 64));
+    EXPECT_FALSE(glint::environment_shape_problem(glint::BackgroundKind::AngularMap, 64, 64));
+    EXPECT_TRUE(glint::environment_shape_problem(glint::BackgroundKind::AngularMap, 64, 32));
+    EXPECT_TRUE(glint::environment_shape_problem(glint::BackgroundKind::SphereMap, 64, 32));
 }
 
 const std::filesystem::path kEnvDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "env";
@@ -105,20 +147,25 @@ const std::filesystem::path kEnvDir = std::filesystem::path(GLINT_SHARED_DATA_DI
 TEST(EnvironmentFiles, LoadGuessLayoutAndAgree) {
     const auto equirect = kEnvDir / "equirect/venice_sunset_1k.hdr";
     const auto ball = kEnvDir / "probe/venice_sunset_mirrorball_512.hdr";
-    if (!std::filesystem::exists(equirect) || !std::filesystem::exists(ball)) GTEST_SKIP() << "no shared env maps";
+    const auto angmap = kEnvDir / "probe/venice_sunset_angmap_512.hdr";
+    if (!std::filesystem::exists(equirect) || !std::filesystem::exists(ball) || !std::filesystem::exists(angmap))
+        GTEST_SKIP() << "no shared env maps";
     const glint::Background a = glint::load_environment(equirect);
     const glint::Background b = glint::load_environment(ball);
+    const glint::Background c =
+        glint::load_environment(angmap, {glint::BackgroundKind::AngularMap, 0.0f, 1.0f});
     EXPECT_EQ(a.kind(), glint::BackgroundKind::Equirectangular);
     EXPECT_EQ(b.kind(), glint::BackgroundKind::SphereMap);
-    // The probe was re-projected from the lat-long map with the same conventions: away from
+    // The probes were re-projected from the lat-long map with the same conventions: away from
     // the ball's rim and from the busy horizon, both must show the same sky (nearest texels
     // of two resolutions differ by a few percent).
     for (Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0.3f, -0.6f, 0.74f), Vec3(-0.5f, 0.3f, 0.8f),
                    Vec3(0.5f, 0.2f, 0.8f), Vec3(0.2f, 0.1f, -0.5f)}) {
         d = normalize(d);
-        const glint::Color ca = a.evaluate(d), cb = b.evaluate(d);
-        ASSERT_TRUE(ca.is_finite() && cb.is_finite());
+        const glint::Color ca = a.evaluate(d), cb = b.evaluate(d), cc = c.evaluate(d);
+        ASSERT_TRUE(ca.is_finite() && cb.is_finite() && cc.is_finite());
         EXPECT_NEAR(cb.luminance() / ca.luminance(), 1.0f, 0.15f) << "direction " << d;
+        EXPECT_NEAR(cc.luminance() / ca.luminance(), 1.0f, 0.15f) << "angular map, direction " << d;
     }
     const glint::Color mean = glint::average_radiance(a);
     EXPECT_TRUE(mean.is_finite());

@@ -14,6 +14,18 @@ namespace glint {
 std::optional<BackgroundKind> parse_environment_kind(std::string_view name) {
     if (name == "equirect" || name == "equirectangular" || name == "latlong") return BackgroundKind::Equirectangular;
     if (name == "spheremap" || name == "mirrorball" || name == "probe") return BackgroundKind::SphereMap;
+    if (name == "angmap" || name == "angular") return BackgroundKind::AngularMap;
+    return std::nullopt;
+}
+
+std::optional<std::string> environment_shape_problem(BackgroundKind kind, int width, int height) {
+    const std::string found = std::to_string(width) + "x" + std::to_string(height);
+    if (kind == BackgroundKind::Equirectangular && width != 2 * height)
+        return "a 2:1 image for an equirectangular map (width = 2 × height), not " + found;
+    if (kind == BackgroundKind::SphereMap && width != height)
+        return "a square image for a sphere map, not " + found;
+    if (kind == BackgroundKind::AngularMap && width != height)
+        return "a square image for an angular map, not " + found;
     return std::nullopt;
 }
 
@@ -36,6 +48,8 @@ Background load_environment(const std::filesystem::path& path, const Environment
                                     " image (expected 2:1 equirectangular or 1:1 sphere map; give the kind)");
     }
     if (kind == BackgroundKind::Constant) throw std::invalid_argument("an environment map needs an image layout");
+    if (const std::optional<std::string> problem = environment_shape_problem(kind, image->width, image->height))
+        throw std::invalid_argument(path.string() + ": expected " + *problem);
     return Background::environment(kind, std::move(image), options.rotation_degrees, options.intensity);
 }
 

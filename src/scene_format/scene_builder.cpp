@@ -7,6 +7,7 @@
 #include "glint/integrators/integrator_registry.h"
 #include "glint/materials/uv_transform_texture.h"
 #include "glint/scene_format/build_context.h"
+#include "glint/scene/environment.h"
 #include "glint/scene_format/registry.h"
 
 #include "glint/scene_format/did_you_mean.h"
@@ -24,7 +25,7 @@ namespace {
 
 constexpr std::array<std::string_view, 2> kMisHeuristics{"balance", "power"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
-constexpr std::array<std::string_view, 3> kBackgrounds{"color", "spheremap", "equirect"};
+constexpr std::array<std::string_view, 4> kBackgrounds{"color", "spheremap", "equirect", "angmap"};
 constexpr std::array<std::string_view, 2> kShadowModes{"none", "opaque"};
 
 /// An integer from `min` to `max`.
@@ -216,12 +217,14 @@ Background read_background(const ParamTable& t, BuildContext& context) {
         t.reject_unknown_keys();
         return Background::constant(c);
     }
+    const BackgroundKind kind = *parse_environment_kind(type);
     auto image = context.image(t, "file", ColorEncoding::Color);
+    if (const std::optional<std::string> problem = environment_shape_problem(kind, image->width, image->height))
+        t.fail("file", *problem);
     const float rotation = t.number("rotation", 0.0f);
     const float intensity = t.number("intensity", 1.0f);
     if (intensity < 0.0f) t.fail("intensity", "a non-negative radiance scale");
     t.reject_unknown_keys();
-    const BackgroundKind kind = type == "spheremap" ? BackgroundKind::SphereMap : BackgroundKind::Equirectangular;
     return Background::environment(kind, std::move(image), rotation, intensity);
 }
 

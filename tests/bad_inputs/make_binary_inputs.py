@@ -39,6 +39,12 @@ write("image/truncated.exr", b"\x76\x2f\x31\x01" + struct.pack("<I", 2) + b"chan
       struct.pack("<I", 37) + b"B\x00")
 # Radiance HDR with a header claiming 100000 × 100000 pixels and only a few bytes of data.
 write("image/huge_dimensions.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 100000\n\x02\x02\x00")
+# Readable Radiance HDR images (flat RGBE rows: stb reads rows narrower than 8 unencoded) of
+# shapes that a named layout refuses: a square one as equirect, a 2:1 one as angmap.
+def flat_hdr(width, height):
+    return b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width) + b"\x80\x80\x80\x81" * (width * height)
+write("image/square_4x4.hdr", flat_hdr(4, 4))
+write("image/wide_4x2.hdr", flat_hdr(4, 2))
 
 # --- STL ---
 # Binary STL: 80-byte header, a count of 1000 triangles, and one 50-byte triangle.
