@@ -74,12 +74,13 @@ inline void record_first_hit(FirstHit& out, const Ray& camera_ray, const Surface
 }
 
 /// The shadow ray from `origin`, a surface point already moved off its surface to the side
-/// the light is on (offset_ray_origin), to a light sample: unbounded for directional lights,
-/// ending at the light's point for point lights, and ending just off the surface of an area
+/// the light is on (offset_ray_origin), to a light sample: unbounded for directional lights
+/// and the environment (lights at infinite distance), ending at the light's point for point
+/// lights, and ending just off the surface of an area
 /// light so that it cannot block itself. A point lit by several lights offsets once. The
 /// ray travels at `time`, the time of the ray that found the point.
 [[nodiscard]] inline Ray shadow_ray(const Vec3& origin, const LightSample& ls, float time) {
-    if (ls.is_delta) return Ray(origin, ls.direction, 0.0f, ls.distance, time);
+    if (ls.is_delta || ls.distance == kInfinity) return Ray(origin, ls.direction, 0.0f, ls.distance, time);
     const Vec3 target = offset_ray_origin(ls.point, ls.normal);
     const Vec3 d = target - origin;
     const float dist = length(d);

@@ -24,7 +24,7 @@ class ParamTable;
 struct LightSample {
     /// Unit vector from the receiving point towards the light.
     Vec3 direction;
-    /// Distance to the sampled point (kInfinity for directional lights).
+    /// Distance to the sampled point (kInfinity for directional lights and the environment).
     float distance = 0.0f;
     /// Radiance arriving along `direction` (delta lights: the irradiance at normal incidence,
     /// zero outside a spot light's cone).
@@ -57,6 +57,14 @@ public:
     /// n); 0 for delta lights, which no ray can hit.
     [[nodiscard]] virtual float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
         (void)ref, (void)p, (void)n;
+        return 0.0f;
+    }
+    /// Solid-angle density with which sample(·, ·) returns `direction` (unit or not), for
+    /// lights at infinity that a ray leaving the scene reaches (the environment): MIS weighs
+    /// such a ray against light sampling with it. 0 for the others, which a ray finds at a
+    /// point (pdf above) or never.
+    [[nodiscard]] virtual float pdf_direction(const Vec3& direction) const {
+        (void)direction;
         return 0.0f;
     }
     /// True for point-like lights, which one sample covers. A flag, not a virtual call: the
