@@ -57,8 +57,8 @@ TEST(EnvironmentLight, Chi2SamplesFollowThePdf) {
                 if (!(ls.pdf > 0.0f)) return std::nullopt;
                 return ls.direction;
             },
-            [&](const Vec3& d) { return double(light->pdf_direction(d)); }, {16, 32, -1.0, angular ? 0.7 : 1.0},
-            {1'000'000, 7, 0.01, 3});
+            [&](const Vec3& d) { return double(light->pdf_direction(d, Vec3(0.0f))); },
+            {16, 32, -1.0, angular ? 0.7 : 1.0}, {1'000'000, 7, 0.01, 3});
         EXPECT_TRUE(r.passed) << name(kind) << ": " << r.report;
     }
 }
@@ -75,7 +75,7 @@ TEST(EnvironmentLight, SampleAgreesWithPdfAndRadiance) {
                 ++valid;
                 EXPECT_FALSE(ls.is_delta);
                 EXPECT_EQ(ls.distance, kInfinity);
-                EXPECT_NEAR(light->pdf_direction(ls.direction) / ls.pdf, 1.0f, 2e-3f) << name(kind);
+                EXPECT_NEAR(light->pdf_direction(ls.direction, Vec3(0.0f)) / ls.pdf, 1.0f, 2e-3f) << name(kind);
                 EXPECT_EQ(ls.radiance, bg.evaluate(ls.direction)) << name(kind);
             }
         EXPECT_GT(valid, 64 * 64 * 9 / 10) << name(kind);
@@ -90,7 +90,7 @@ double pdf_integral(const Light& light) {
         const double z = -1.0 + (i + 0.5) * 2.0 / kCos, r = std::sqrt(1.0 - z * z);
         for (int j = 0; j < kPhi; ++j) {
             const double phi = (j + 0.5) * 2.0 * kPi / kPhi;
-            sum += light.pdf_direction(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)));
+            sum += light.pdf_direction(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)), Vec3(0.0f));
         }
     }
     return sum * (2.0 / kCos) * (2.0 * kPi / kPhi);
@@ -115,7 +115,8 @@ TEST(EnvironmentLight, AUniformMapIsSampledUniformly) {
         for (Vec3 d : {Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(0.3f, 0.8f, 0.2f), Vec3(-0.5f, -0.7f, 0.4f),
                        Vec3(0.2f, 0.1f, 0.9f)}) {
             d = normalize(d);
-            EXPECT_NEAR(light->pdf_direction(d) * 4.0f * kPi, 1.0f, 0.15f) << name(kind) << " direction " << d;
+            EXPECT_NEAR(light->pdf_direction(d, Vec3(0.0f)) * 4.0f * kPi, 1.0f, 0.15f)
+                << name(kind) << " direction " << d;
         }
     }
 }
@@ -126,6 +127,15 @@ TEST(EnvironmentLight, ConstantColourAndBlackBackgrounds) {
     const LightSample ls = sky->sample(Vec3(0.0f), Vec2(0.3f, 0.7f));
     EXPECT_EQ(ls.radiance, Color(0.3f, 0.5f, 0.9f));
     EXPECT_FLOAT_EQ(ls.pdf, 0.25f * kInvPi);
+    // At a surface, cosine-weighted about its normal: every sample above it, with cos θ/π.
+    const Vec3 n = normalize(Vec3(0.3f, 0.9f, -0.2f));
+    for (int i = 0; i < 16; ++i) {
+        const LightSample s = sky->sample_at_surface(Vec3(0.0f), n, Vec2((i + 0.5f) / 16, (i * 7 % 16 + 0.5f) / 16));
+        EXPECT_GT(dot(s.direction, n), 0.0f);
+        EXPECT_NEAR(s.pdf, dot(s.direction, n) * kInvPi, 1e-5f);
+        EXPECT_FLOAT_EQ(sky->pdf_direction(s.direction, n), s.pdf);
+    }
+    EXPECT_EQ(sky->pdf_direction(-n, n), 0.0f);
     EXPECT_FALSE(EnvironmentLight::of(Background::constant(Color(0.0f))));
     EXPECT_FALSE(EnvironmentLight::of(Background()));
     auto black = std::make_shared<const Image>(Image(8, 4, 3));

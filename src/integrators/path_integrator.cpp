@@ -48,7 +48,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
     // The previous bounce: was it a delta lobe, its BSDF density and where it was.
     bool specular_bounce = true;
     float bsdf_pdf = 0.0f;
-    Vec3 previous_point;
+    Vec3 previous_point, previous_normal;
 
     // The ray of the path in context.tree, if one is recorded.
     int32_t node = -1;
@@ -60,8 +60,12 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         Ray r = ray;
         Hit hit;
         if (!scene.intersect(r, hit)) {
-            // The background is not sampled as a light, so what BSDF sampling finds counts in full.
-            const Color background = scene.background().evaluate(ray.direction);
+            // The environment light samples the background too: after a non-delta bounce, what
+            // BSDF sampling finds takes the power heuristic's share (Veach 1997, eq. 9.13).
+            Color background = scene.background().evaluate(ray.direction);
+            if (const EnvironmentLight* environment = scene.environment_light(); environment && !specular_bounce)
+                background *=
+                    mis_weight(bsdf_pdf, light_choice_pdf * environment->pdf_direction(ray.direction, previous_normal));
             radiance += throughput * background;
             if (context.tree) context.tree->add_radiance(node, background);
             break;
@@ -97,7 +101,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         if (bsdf.has_smooth_lobes() && !lights.empty()) {
             const auto chosen = std::min(std::size_t(u_light * float(lights.size())), lights.size() - 1);
             const Light& light = *lights[chosen];
-            const LightSample ls = light.sample(si.p, u_light_point);
+            const LightSample ls = light.sample_at_surface(si.p, sp.n, u_light_point);
             if (ls.pdf > 0.0f && !ls.radiance.is_black()) {
                 const Color f = bsdf.eval(ls.direction);
                 if (!f.is_black()) {
@@ -128,6 +132,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         specular_bounce = (bs->flags & kBsdfDelta) != 0;
         bsdf_pdf = bs->pdf;
         previous_point = si.p;
+        previous_normal = sp.n;
         if (bs->flags & kBsdfTransmission) {
             media = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
             ray = Ray(offset_ray_origin(si.p, -sp.ng), bs->wi, 0.0f, kInfinity, si.time);

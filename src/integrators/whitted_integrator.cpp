@@ -101,6 +101,7 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
     const std::vector<const Light*>& lights = scene.all_lights();
     for (uint32_t i = 0; i < lights.size(); ++i) {
         const Light* light = lights[i];
+        if (light == scene.environment_light()) continue;
         if (light->is_delta()) {
             add(light->sample(si.p, Vec2()), 1.0f, i);
             continue;

@@ -1,6 +1,7 @@
 #include "glint/lights/environment_light.h"
 
 #include "glint/math/constants.h"
+#include "glint/math/frame.h"
 #include "glint/sampling/warp.h"
 
 #include <algorithm>
@@ -79,13 +80,25 @@ EnvironmentLight::EnvironmentLight(const Background& background, std::optional<P
 
 float EnvironmentLight::solid_angle_per_uv(Vec2 uv) const { return layout_solid_angle_per_uv(background_.kind(), uv); }
 
-LightSample EnvironmentLight::sample(const Vec3&, Vec2 u) const {
+LightSample EnvironmentLight::sample(const Vec3& point, Vec2 u) const {
+    return sample_at_surface(point, Vec3(0.0f), u);
+}
+
+LightSample EnvironmentLight::sample_at_surface(const Vec3&, const Vec3& normal, Vec2 u) const {
     LightSample ls;
     ls.is_delta = false;
     ls.distance = kInfinity;
     if (!distribution_) {
-        ls.direction = sample_uniform_sphere(u);
-        ls.pdf = uniform_sphere_pdf();
+        const bool receiver = normal != Vec3(0.0f);
+        if (receiver) {
+            Vec3 b1, b2;
+            orthonormal_basis(normal, b1, b2);
+            const Vec3 local = sample_cosine_hemisphere(u);
+            ls.direction = b1 * local.x + b2 * local.y + normal * local.z;
+        } else {
+            ls.direction = sample_uniform_sphere(u);
+        }
+        ls.pdf = pdf_direction(ls.direction, normal);
         ls.radiance = background_.color();
         return ls;
     }
@@ -100,8 +113,9 @@ LightSample EnvironmentLight::sample(const Vec3&, Vec2 u) const {
     return ls;
 }
 
-float EnvironmentLight::pdf_direction(const Vec3& direction) const {
-    if (!distribution_) return uniform_sphere_pdf();
+float EnvironmentLight::pdf_direction(const Vec3& direction, const Vec3& normal) const {
+    if (!distribution_)
+        return normal != Vec3(0.0f) ? cosine_hemisphere_pdf(dot(normalize(direction), normal)) : uniform_sphere_pdf();
     const Vec2 uv = background_.uv_of(direction);
     const float jacobian = solid_angle_per_uv(uv);
     return jacobian > 0.0f ? distribution_->pdf(uv) / jacobian : 0.0f;

@@ -73,6 +73,8 @@ void RenderScene::build_area_lights() {
     }
     for (const auto& l : scene_.lights()) all_lights_.push_back(l.get());
     for (const auto& l : area_lights_) all_lights_.push_back(l.get());
+    environment_light_ = EnvironmentLight::of(scene_.background);
+    if (environment_light_) all_lights_.push_back(environment_light_.get());
 }
 
 Color RenderScene::emitted_slow(uint32_t object, const Material& m, const SurfaceInteraction& si,

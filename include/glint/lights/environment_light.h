@@ -21,14 +21,19 @@ namespace glint {
 ///   unit disk, 16 du dv, the same everywhere; pixels whose centre is off the disk weigh 0;
 /// - angular map (angle πρ at radius ρ): dω = π sin(πρ)/ρ dA, 4π sin(πρ)/ρ du dv.
 /// The solid-angle density is then p(u, v) / (dω/(du dv)) at the sampled point (pbrt-v4,
-/// section 12.5.2). A constant colour is sampled uniformly over the sphere, 1/(4π).
+/// section 12.5.2). A constant colour is sampled cosine-weighted about the receiver's
+/// normal, cos θ/π (uniformly over the sphere, 1/(4π), where there is no receiver): a
+/// diffuse surface's own density, so that a white diffuse object under a white sky is
+/// noiseless (both MIS strategies give exactly half).
 class EnvironmentLight final : public Light {
 public:
     /// The light of `background`, or null when it sends nothing (black, or an all-black map).
     [[nodiscard]] static std::unique_ptr<EnvironmentLight> of(const Background& background);
 
     [[nodiscard]] LightSample sample(const Vec3& point, Vec2 u) const override;
-    [[nodiscard]] float pdf_direction(const Vec3& direction) const override;
+    [[nodiscard]] LightSample sample_at_surface(const Vec3& point, const Vec3& normal, Vec2 u) const override;
+    /// A zero `normal` stands for no receiver (sample()'s density).
+    [[nodiscard]] float pdf_direction(const Vec3& direction, const Vec3& normal) const override;
     [[nodiscard]] std::string_view type_name() const override { return "environment"; }
 
 private:

@@ -59,12 +59,18 @@ public:
         (void)ref, (void)p, (void)n;
         return 0.0f;
     }
-    /// Solid-angle density with which sample(·, ·) returns `direction` (unit or not), for
-    /// lights at infinity that a ray leaving the scene reaches (the environment): MIS weighs
-    /// such a ray against light sampling with it. 0 for the others, which a ray finds at a
-    /// point (pdf above) or never.
-    [[nodiscard]] virtual float pdf_direction(const Vec3& direction) const {
-        (void)direction;
+    /// sample() for a receiving surface point whose shading normal is `normal`: a light whose
+    /// density can follow the receiver's cosine (a uniform sky) does; others ignore it.
+    [[nodiscard]] virtual LightSample sample_at_surface(const Vec3& point, const Vec3& normal, Vec2 u) const {
+        (void)normal;
+        return sample(point, u);
+    }
+    /// Solid-angle density with which sample_at_surface(·, normal, ·) returns `direction`
+    /// (unit or not), for lights at infinity that a ray leaving the scene reaches (the
+    /// environment): MIS weighs such a ray against light sampling with it. 0 for the others,
+    /// which a ray finds at a point (pdf above) or never.
+    [[nodiscard]] virtual float pdf_direction(const Vec3& direction, const Vec3& normal) const {
+        (void)direction, (void)normal;
         return 0.0f;
     }
     /// True for point-like lights, which one sample covers. A flag, not a virtual call: the

@@ -6,6 +6,7 @@
 
 #include "glint/accel/bvh.h"
 #include "glint/lights/area_light.h"
+#include "glint/lights/environment_light.h"
 #include "glint/scene/scene.h"
 
 #include <memory>
@@ -43,8 +44,10 @@ public:
     /// Area lights: the declared ones and, with `emission_lights`, every emissive object
     /// whose shape has an area.
     [[nodiscard]] const std::vector<std::unique_ptr<AreaLight>>& area_lights() const { return area_lights_; }
-    /// Every light, point-like first, then area lights.
+    /// Every light, point-like first, then area lights, then the environment.
     [[nodiscard]] const std::vector<const Light*>& all_lights() const { return all_lights_; }
+    /// The background as a light (the last of all_lights()); null when it is black.
+    [[nodiscard]] const EnvironmentLight* environment_light() const { return environment_light_.get(); }
     /// The area light that object `object` is, if any.
     [[nodiscard]] const AreaLight* area_light_of(uint32_t object) const {
         const int32_t i = objects_[object].area_light;
@@ -107,6 +110,7 @@ private:
     Scene scene_;
     std::vector<HotObject> objects_;
     std::vector<std::unique_ptr<AreaLight>> area_lights_;
+    std::unique_ptr<EnvironmentLight> environment_light_;
     std::vector<const Light*> all_lights_;
     Bvh top_level_;
     bool has_motion_ = false;
