@@ -79,8 +79,12 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
         env.intensity = opt.env_intensity;
         Scene& scene = source.loaded.scene;
         scene.background = load_environment(opt.env, env);
-        // Under the default lighting the environment also replaces the grey ambient sky.
-        if (source.default_lighting) scene.ambient_light = average_radiance(scene.background);
+        // Under the default lighting the environment also replaces the grey ambient sky: as a
+        // light, whose samples are shadow-tested, in both integrators.
+        if (source.default_lighting) {
+            scene.ambient_light = Color(0.0f);
+            scene.environment_lighting = true;
+        }
     }
     return source;
 }

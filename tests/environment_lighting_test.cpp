@@ -1,6 +1,7 @@
 // The environment as a light in both integrators: a white furnace (a diffuse sphere under a
 // uniform sky shows its albedo, whether the sky is a colour or a map), and a small bright sun
-// in a map casting the shadow of a sphere on a plane.
+// in a map casting the shadow of a sphere on a plane. The Whitted tracer lights with the
+// background only with Scene::environment_lighting.
 
 #include "glint/geometry/quad.h"
 #include "glint/geometry/sphere.h"
@@ -56,6 +57,7 @@ RenderScene furnace(const Background& background) {
     m.diffuse = Color(0.8f);
     scene.add_object(std::make_shared<Sphere>(Vec3(0.0f), 1.0f), scene.add_material(m));
     scene.background = background;
+    scene.environment_lighting = true;
     return RenderScene(std::move(scene));
 }
 
@@ -92,6 +94,7 @@ RenderScene sun_and_sphere() {
                      grey);
     scene.add_object(std::make_shared<Sphere>(Vec3(0.0f, 1.0f, 0.0f), 0.5f), grey);
     scene.background = Background::environment(BackgroundKind::Equirectangular, sky_map(0.05f, 20000.0f));
+    scene.environment_lighting = true;
     return RenderScene(std::move(scene));
 }
 
@@ -105,6 +108,26 @@ void expect_shadow(const RenderScene& scene, const Integrator& integrator, const
 
 TEST(EnvironmentLighting, SunInTheMapCastsAShadowInThePathTracer) {
     expect_shadow(sun_and_sphere(), PathIntegrator(4, MisHeuristic::Power), "path");
+}
+
+TEST(EnvironmentLighting, SunInTheMapCastsAShadowInTheWhittedTracer) {
+    expect_shadow(sun_and_sphere(), WhittedIntegrator(4, 16, 4), "whitted");
+}
+
+TEST(EnvironmentLighting, WhittedFurnaceShowsTheAlbedoOnlyWhenAsked) {
+    // Direct light from a white sky onto a convex diffuse sphere: albedo × 1, and noiseless
+    // for the constant sky, whose samples follow the cosine.
+    const RenderScene lit = furnace(Background::constant(Color(1.0f)));
+    const Estimate e = radiance_towards(lit, WhittedIntegrator(4, 4, 4), Vec3(0.3f, 0.2f, 4.0f), Vec3(0.2f), 64);
+    EXPECT_NEAR(e.mean, 0.8, 1e-4);
+    Scene unlit;
+    Material m;
+    m.diffuse = Color(0.8f);
+    unlit.add_object(std::make_shared<Sphere>(Vec3(0.0f), 1.0f), unlit.add_material(m));
+    unlit.background = Background::constant(Color(1.0f));
+    const Estimate dark = radiance_towards(RenderScene(std::move(unlit)), WhittedIntegrator(4, 4, 4),
+                                           Vec3(0.3f, 0.2f, 4.0f), Vec3(0.2f), 4);
+    EXPECT_EQ(dark.mean, 0.0) << "without environment_lighting the sky is only seen";
 }
 
 }  // namespace

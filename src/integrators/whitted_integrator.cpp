@@ -62,6 +62,15 @@ Color WhittedIntegrator::glossy_emission_weight(const RenderScene& scene, uint32
     return emission * power_heuristic(float(origin.samples) * origin.pdf, float(light_samples_) * light_pdf);
 }
 
+Color WhittedIntegrator::glossy_background_weight(const RenderScene& scene, const Ray& ray, const TraceContext& context,
+                                                  const Color& background) const {
+    const GlossyOrigin& origin = context.glossy_origin;
+    const EnvironmentLight* light = scene.environment_light();
+    if (!light || !scene.environment_lighting()) return background;
+    const float light_pdf = light->pdf_direction(ray.direction, origin.normal);
+    return background * power_heuristic(float(origin.samples) * origin.pdf, float(light_samples_) * light_pdf);
+}
+
 template <bool Record>
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                       const Vec3& ng, uint32_t glossy_count, TraceContext& context) const {
@@ -101,7 +110,7 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
     const std::vector<const Light*>& lights = scene.all_lights();
     for (uint32_t i = 0; i < lights.size(); ++i) {
         const Light* light = lights[i];
-        if (light == scene.environment_light()) continue;
+        if (light == scene.environment_light() && !scene.environment_lighting()) continue;
         if (light->is_delta()) {
             add(light->sample(si.p, Vec2()), 1.0f, i);
             continue;
@@ -110,7 +119,7 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         std::array<Vec2, 16> small;
         std::vector<Vec2> large;
         for (const Vec2& u : stratified_set(context.sampler, light_samples_, small, large))
-            add(light->sample(si.p, u), 1.0f / float(light_samples_), i);
+            add(light->sample_at_surface(si.p, bsdf.normal(), u), 1.0f / float(light_samples_), i);
     }
     return sum;
 }
@@ -141,7 +150,7 @@ Color WhittedIntegrator::glossy(const RenderScene& scene, const Bsdf& bsdf, cons
         const IorStack beyond =
             transmitted ? (sp.entering ? media.entered(sp.medium, ior) : media.left(sp.medium)) : media;
         const Ray sampled(offset_ray_origin(si.p, transmitted ? -sp.ng : sp.ng), s->wi, 0.0f, kInfinity, si.time);
-        context.glossy_origin = {si.p, s->pdf, count};
+        context.glossy_origin = {si.p, s->pdf, count, bsdf.normal()};
         if constexpr (Record)
             context.branch = {transmitted ? RayKind::GlossyTransmission : RayKind::GlossyReflection, node, weight * w};
         sum += w * trace_ray<Record>(scene, sampled, depth + 1, beyond, context);
@@ -163,7 +172,9 @@ Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uin
     Ray r = ray;
     Hit hit;
     if (!scene.intersect(r, hit)) {
-        const Color background = scene.background().evaluate(ray.direction);
+        Color background = scene.background().evaluate(ray.direction);
+        // A glossy sample that escapes finds what the environment light's samples find too.
+        if (context.glossy_origin.pdf > 0.0f) background = glossy_background_weight(scene, ray, context, background);
         if constexpr (Record) context.tree->add_radiance(node, background);
         return background;
     }

@@ -236,6 +236,7 @@ void read_world(const ParamTable& t, Scene& scene) {
                                    ? DielectricShadows::Opaque
                                    : DielectricShadows::None;
     scene.emission_lights = t.boolean("emission_lights", scene.emission_lights);
+    scene.environment_lighting = t.boolean("environment_lighting", scene.environment_lighting);
     t.reject_unknown_keys();
 }
 

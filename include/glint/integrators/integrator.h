@@ -40,6 +40,8 @@ struct GlossyOrigin {
     float pdf = 0.0f;
     /// Glossy samples taken at that point.
     uint32_t samples = 0;
+    /// Its shading normal (the environment light's density depends on it).
+    Vec3 normal;
 };
 
 /// Per-pixel-sample context handed to Li(): the sample generator, a ray counter and, when

@@ -75,6 +75,11 @@ private:
                                                                  const SurfaceInteraction& si,
                                                                  const TraceContext& context,
                                                                  const Color& emission) const;
+    /// The background a glossy sample's ray escaped to, times its MIS weight against the
+    /// environment light's samples when the scene lights with it. Out of line as above.
+    [[gnu::noinline]] [[nodiscard]] Color glossy_background_weight(const RenderScene& scene, const Ray& ray,
+                                                                   const TraceContext& context,
+                                                                   const Color& background) const;
 
     uint32_t max_depth_;
     uint32_t light_samples_;

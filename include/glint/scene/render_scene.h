@@ -48,6 +48,8 @@ public:
     [[nodiscard]] const std::vector<const Light*>& all_lights() const { return all_lights_; }
     /// The background as a light (the last of all_lights()); null when it is black.
     [[nodiscard]] const EnvironmentLight* environment_light() const { return environment_light_.get(); }
+    /// Scene::environment_lighting: the Whitted integrator samples environment_light() too.
+    [[nodiscard]] bool environment_lighting() const { return scene_.environment_lighting; }
     /// The area light that object `object` is, if any.
     [[nodiscard]] const AreaLight* area_light_of(uint32_t object) const {
         const int32_t i = objects_[object].area_light;

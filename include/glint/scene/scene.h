@@ -73,6 +73,11 @@ public:
     /// scene (pbrt-v4's DiffuseAreaLight), or, when false, only seen by rays that hit them
     /// (Glint's first Whitted behaviour). Declared area lights are lights either way.
     bool emission_lights = true;
+    /// Whether the Whitted integrator lights surfaces with the background: light_samples
+    /// shadow-tested samples of the environment light per shading point, as for an area
+    /// light, so that an HDR sun casts shadows. Off, the background is only seen (and the
+    /// ambient term stands for it). The path tracer always samples a non-black background.
+    bool environment_lighting = false;
 
     /// Returns the new material's index.
     uint32_t add_material(Material material);
