@@ -337,6 +337,11 @@ TEST(TomlScene, WorldAndBackground) {
     EXPECT_EQ(s.scene.background.color(), Color(0.5f));
 }
 
+TEST(TomlScene, EnvironmentLightingIsOffUnlessAsked) {
+    EXPECT_FALSE(load("[background]\ncolor = 0.5\n").scene.environment_lighting);
+    EXPECT_TRUE(load("[world]\nenvironment_lighting = true\n[background]\ncolor = 0.5\n").scene.environment_lighting);
+}
+
 TEST(TomlScene, SphereMapBackgroundResolvesAgainstTheSceneFolder) {
     const LoadedScene s = load(
         "[background]\ntype = \"spheremap\"\nfile = \"assets/venice_sunset_mirrorball_512.hdr\"\n"
