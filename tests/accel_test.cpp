@@ -266,7 +266,7 @@ TEST(Degenerate, OnePrimitive) {
 /// An alpha texture that is transparent where u < 0.5.
 class HalfTransparent final : public Texture {
 public:
-    Color evaluate(const Vec2&, const Vec3&) const override { return Color(1.0f); }
+    Color evaluate(const TextureQuery&) const override { return Color(1.0f); }
     float alpha(const Vec2& uv) const override { return uv.x < 0.5f ? 0.0f : 1.0f; }
     std::string_view type_name() const override { return "half"; }
 };

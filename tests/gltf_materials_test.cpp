@@ -87,7 +87,7 @@ TEST(GltfMaterials, TransmissionRoughnessMakesARoughDielectric) {
     EXPECT_FLOAT_EQ(m.roughness, 0.4f);
     // At a hit, the glass is the rough dielectric (no delta lobes left).
     const glint::Vec3 up(0, 0, 1);
-    const glint::Bsdf bsdf(m, glint::material_at_hit(m, {}, {}), up, up, glint::normalize(glint::Vec3(0.3f, 0, 1)),
+    const glint::Bsdf bsdf(m, glint::material_at_hit(m, glint::Vec2(), glint::Vec3()), up, up, glint::normalize(glint::Vec3(0.3f, 0, 1)),
                            {1.0f, m.ior});
     EXPECT_TRUE(bsdf.has_glossy_lobes());
     EXPECT_FALSE(bsdf.specular().refracted);

@@ -72,6 +72,8 @@ void Box::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) co
     const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
     const Vec3 d = box_.diagonal();
     si.uv = Vec2((p[a1] - box_.lo[a1]) / d[a1], (p[a2] - box_.lo[a2]) / d[a2]);
+    si.dpdu[a1] = d[a1];
+    si.dpdv[a2] = d[a2];
     si.front_face = dot(ray.direction, n) < 0.0f;
 }
 

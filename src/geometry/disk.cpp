@@ -58,7 +58,12 @@ void Disk::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) c
     si.shading_normal = normal_;
     float phi = std::atan2(hit.v, hit.u);
     if (phi < 0.0f) phi += 2.0f * kPi;
-    si.uv = Vec2(std::sqrt(hit.u * hit.u + hit.v * hit.v) / radius_, phi / (2.0f * kPi));
+    const float rho = std::sqrt(hit.u * hit.u + hit.v * hit.v);
+    si.uv = Vec2(rho / radius_, phi / (2.0f * kPi));
+    // u = ρ/R along the radius, v = φ/2π around it.
+    const Vec3 radial = tangent_ * std::cos(phi) + bitangent_ * std::sin(phi);
+    si.dpdu = radial * radius_;
+    si.dpdv = cross(normal_, radial) * (2.0f * kPi * rho);
     si.front_face = dot(ray.direction, normal_) < 0.0f;
 }
 

@@ -1,5 +1,7 @@
 #include "glint/geometry/heightfield.h"
 
+#include "glint/geometry/triangle_differentials.h"
+
 #include "glint/geometry/triangle.h"
 #include "glint/math/constants.h"
 #include "glint/scene_format/param_table.h"
@@ -121,7 +123,15 @@ void Heightfield::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction
     const Vec3 ns = vertex_normal(ci[0][0], ci[0][1]) * b0 + vertex_normal(ci[1][0], ci[1][1]) * b1 +
                     vertex_normal(ci[2][0], ci[2][1]) * b2;
     si.shading_normal = face_forward(normalize(ns), ng);
-    si.uv = Vec2((si.p.x - min_.x) / (max_.x - min_.x), (si.p.z - min_.y) / (max_.y - min_.y));
+    const Vec2 extent(max_.x - min_.x, max_.y - min_.y);
+    auto uv_of = [&](const Vec3& p) { return Vec2((p.x - min_.x) / extent.x, (p.z - min_.y) / extent.y); };
+    si.uv = uv_of(si.p);
+    const TriangleDerivatives derivatives = triangle_derivatives(p0, p1, p2, uv_of(p0), uv_of(p1), uv_of(p2));
+    si.dpdu = derivatives.dpdu;
+    si.dpdv = derivatives.dpdv;
+    si.curvature = triangle_curvature(p0, p1, p2, normalize(vertex_normal(ci[0][0], ci[0][1])),
+                                      normalize(vertex_normal(ci[1][0], ci[1][1])),
+                                      normalize(vertex_normal(ci[2][0], ci[2][1])));
     si.front_face = dot(ray.direction, ng) < 0.0f;
 }
 

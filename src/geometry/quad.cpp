@@ -66,6 +66,8 @@ void Quad::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) c
     si.geometric_normal = normal_;
     si.shading_normal = normal_;
     si.uv = Vec2(hit.u, hit.v);
+    si.dpdu = edge_u_;
+    si.dpdv = edge_v_;
     si.front_face = dot(ray.direction, normal_) < 0.0f;
 }
 

@@ -70,6 +70,12 @@ void Sphere::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si)
     si.geometric_normal = n;
     si.shading_normal = n;
     si.uv = uv_of(n);
+    // p = c + r·(sinθ cosφ, cosθ, sinθ sinφ) with u = φ/2π, v = θ/π (uv_of).
+    const float sin_theta = std::sqrt(n.x * n.x + n.z * n.z);
+    si.dpdu = Vec3(-n.z, 0.0f, n.x) * (2.0f * kPi * radius_);
+    si.dpdv = sin_theta > 1e-6f ? Vec3(n.y * n.x / sin_theta, -sin_theta, n.y * n.z / sin_theta) * (kPi * radius_)
+                                : Vec3(kPi * radius_, 0.0f, 0.0f);
+    si.curvature = 1.0f / radius_;
     si.front_face = dot(ray.direction, n) < 0.0f;
 }
 

@@ -1,5 +1,7 @@
 #include "glint/geometry/triangle_mesh.h"
 
+#include "glint/geometry/triangle_differentials.h"
+
 #include "glint/geometry/triangle.h"
 #include "glint/sampling/warp.h"
 
@@ -119,11 +121,20 @@ void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteractio
         if (len > 0.0f) ns = face_forward(interpolated / len, ng);
     }
     si.shading_normal = ns;
-    if (!data_.uvs.empty()) {
-        si.uv = data_.uvs[idx[0]] * b0 + data_.uvs[idx[1]] * b1 + data_.uvs[idx[2]] * b2;
-    } else {
-        si.uv = Vec2(b1, b2);
+    if (!data_.normals.empty()) {
+        auto unit = [](const Vec3& n) { return n / std::max(length(n), 1e-20f); };
+        si.curvature = triangle_curvature(p0, p1, p2, unit(data_.normals[idx[0]]), unit(data_.normals[idx[1]]),
+                                          unit(data_.normals[idx[2]]));
     }
+    // Without texture coordinates the barycentric weights stand in for them.
+    const bool has_uvs = !data_.uvs.empty();
+    const Vec2 uv0 = has_uvs ? data_.uvs[idx[0]] : Vec2(0.0f, 0.0f);
+    const Vec2 uv1 = has_uvs ? data_.uvs[idx[1]] : Vec2(1.0f, 0.0f);
+    const Vec2 uv2 = has_uvs ? data_.uvs[idx[2]] : Vec2(0.0f, 1.0f);
+    si.uv = uv0 * b0 + uv1 * b1 + uv2 * b2;
+    const TriangleDerivatives derivatives = triangle_derivatives(p0, p1, p2, uv0, uv1, uv2);
+    si.dpdu = derivatives.dpdu;
+    si.dpdv = derivatives.dpdv;
     if (!data_.colors.empty())
         si.vertex_color = data_.colors[idx[0]] * b0 + data_.colors[idx[1]] * b1 + data_.colors[idx[2]] * b2;
     if (!data_.vertex_materials.empty()) {

@@ -95,6 +95,7 @@ CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& cam
     const float time = scene.has_motion() ? camera.time(context.sampler.next_1d()) : camera.shutter().open;
     const Ray ray =
         camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height), u_lens, time);
+    context.cone = camera_ray_cone(camera, height, context.sampler.samples_per_axis());
     sample.radiance = Li(scene, ray, context);
     return sample;
 }

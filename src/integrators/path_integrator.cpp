@@ -52,6 +52,8 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
 
     // The ray of the path in context.tree, if one is recorded.
     int32_t node = -1;
+    // The cone of `ray` (integrators/ray_cone.h), for texture footprints.
+    RayCone cone = context.cone;
 
     for (uint32_t depth = 0;; ++depth) {
         ++context.rays;
@@ -70,7 +72,9 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
             if (context.tree) context.tree->add_radiance(node, background);
             break;
         }
-        const SurfaceInteraction si = scene.interaction(r, hit);
+        SurfaceInteraction si = scene.interaction(r, hit);
+        cone = cone.at(r.tmax * length(ray.direction));
+        si.uv_footprint = cone.uv_footprint(si, ray.direction);
         // Inside an absorbing dielectric the path loses exp(−σa·d) on the way here.
         throughput *= transmittance(scene, media, r.tmax);
         // Only hits on per-vertex materials pay for a blended copy.
@@ -80,7 +84,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         const ShadingPoint sp = shading_point(si, m, ray, media);
         if (context.tree) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], sp.n);
         if (depth == 0 && context.first_hit)
-            record_first_hit(*context.first_hit, camera_ray, si, sp, m, material_at_hit(m, si.uv, si.p));
+            record_first_hit(*context.first_hit, camera_ray, si, sp, m, material_at_hit(m, si));
 
         const Color le = scene.emitted(hit.object, m, si, sp.wo);
         if (!le.is_black()) {
@@ -93,7 +97,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         }
         if (depth >= max_depth_) break;
 
-        const Bsdf bsdf(m, material_at_hit(m, si.uv, si.p), sp.n, sp.ng, sp.wo, sp.media);
+        const Bsdf bsdf(m, material_at_hit(m, si), sp.n, sp.ng, sp.wo, sp.media);
 
         // Next-event estimation: one light, chosen uniformly.
         const float u_light = sampler.next_1d();
@@ -133,6 +137,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         bsdf_pdf = bs->pdf;
         previous_point = si.p;
         previous_normal = sp.n;
+        cone = cone.bounced(si.curvature);
         if (bs->flags & kBsdfTransmission) {
             media = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
             ray = Ray(offset_ray_origin(si.p, -sp.ng), bs->wi, 0.0f, kInfinity, si.time);

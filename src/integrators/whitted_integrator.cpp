@@ -139,6 +139,7 @@ Color WhittedIntegrator::glossy(const RenderScene& scene, const Bsdf& bsdf, cons
     if constexpr (Record) weight = context.tree->nodes()[std::size_t(node)].weight;
     const bool was_below = context.below_glossy;
     context.below_glossy = true;
+    const RayCone outgoing = context.cone;
     const float share = 1.0f / float(count);
     Color sum;
     for (uint32_t i = 0; i < count; ++i) {
@@ -151,6 +152,7 @@ Color WhittedIntegrator::glossy(const RenderScene& scene, const Bsdf& bsdf, cons
             transmitted ? (sp.entering ? media.entered(sp.medium, ior) : media.left(sp.medium)) : media;
         const Ray sampled(offset_ray_origin(si.p, transmitted ? -sp.ng : sp.ng), s->wi, 0.0f, kInfinity, si.time);
         context.glossy_origin = {si.p, s->pdf, count, bsdf.normal()};
+        context.cone = outgoing;
         if constexpr (Record)
             context.branch = {transmitted ? RayKind::GlossyTransmission : RayKind::GlossyReflection, node, weight * w};
         sum += w * trace_ray<Record>(scene, sampled, depth + 1, beyond, context);
@@ -179,7 +181,12 @@ Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uin
         return background;
     }
 
-    const SurfaceInteraction si = scene.interaction(r, hit);
+    SurfaceInteraction si = scene.interaction(r, hit);
+    // The ray's cone where it hit sets the texture footprint; the rays leaving here carry it
+    // on, bounced (shade restores it for each).
+    const RayCone cone = context.cone.at(r.tmax * length(ray.direction));
+    si.uv_footprint = cone.uv_footprint(si, ray.direction);
+    context.cone = cone.bounced(si.curvature);
     if constexpr (Record) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], Vec3());
     // Inside an absorbing dielectric the radiance from the hit loses exp(−σa·d) on the way.
     const Color kept = transmittance(scene, media, r.tmax);
@@ -193,7 +200,9 @@ template <bool Record>
 Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
                                const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const {
     const ShadingPoint sp = shading_point(si, m, ray, media);
-    const MaterialAtHit at = material_at_hit(m, si.uv, si.p);
+    const MaterialAtHit at = material_at_hit(m, si);
+    // The cone every ray leaving here starts with (each child's trace moves context.cone on).
+    const RayCone outgoing = context.cone;
     const Bsdf bsdf(m, at, sp.n, sp.ng, sp.wo, sp.media);
     // The ray being shaded (context.node changes as the children are traced).
     const int32_t node = Record ? context.node : -1;
@@ -230,6 +239,7 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
         const Ray reflected(offset_ray_origin(si.p, sp.ng), specular.reflected, 0.0f, kInfinity, si.time);
         if constexpr (Record) context.branch = {RayKind::Reflection, node, weight * specular.reflection};
         context.glossy_origin.pdf = 0.0f;
+        context.cone = outgoing;
         radiance += specular.reflection * trace_ray<Record>(scene, reflected, depth + 1, media, context);
     }
     if (specular.transmission > 0.0f && specular.refracted) {
@@ -237,10 +247,12 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
         const Ray transmitted(offset_ray_origin(si.p, -sp.ng), *specular.refracted, 0.0f, kInfinity, si.time);
         if constexpr (Record) context.branch = {RayKind::Refraction, node, weight * specular.transmission};
         context.glossy_origin.pdf = 0.0f;
+        context.cone = outgoing;
         radiance += trace_ray<Record>(scene, transmitted, depth + 1, inside, context) * specular.transmission;
     }
     if (glossy_count > 0) {
         if constexpr (Record) context.node = node;
+        context.cone = outgoing;
         radiance += glossy<Record>(scene, bsdf, si, sp, m.ior, glossy_count, depth, media, context);
     }
     return radiance;

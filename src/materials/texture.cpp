@@ -8,15 +8,15 @@
 namespace glint {
 
 ImageTexture::ImageTexture(std::shared_ptr<const Image> image, WrapMode wrap, Color scale)
-    : image_(std::move(image)), wrap_(wrap), scale_(scale) {}
+    : image_(image), mip_map_(std::move(image)), wrap_(wrap), scale_(scale) {}
 
 void ImageTexture::lookup(const Vec2& uv, int first, int count, float* out) const {
     sample_bilinear(*image_, uv, wrap_, wrap_, first, count, out);
 }
 
-Color ImageTexture::evaluate(const Vec2& uv, const Vec3&) const {
-    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return scale_;
-    return sample_bilinear_color(*image_, uv, wrap_, wrap_) * scale_;
+Color ImageTexture::evaluate(const TextureQuery& q) const {
+    if (!std::isfinite(q.uv.x) || !std::isfinite(q.uv.y)) return scale_;
+    return mip_map_.sample_color(q.uv, q.uv_footprint, wrap_) * scale_;
 }
 
 float ImageTexture::alpha(const Vec2& uv) const {
@@ -27,10 +27,31 @@ float ImageTexture::alpha(const Vec2& uv) const {
     return a;
 }
 
-Color CheckerTexture::evaluate(const Vec2& uv, const Vec3&) const {
-    const auto i = static_cast<int64_t>(std::floor(uv.x * scale_));
-    const auto j = static_cast<int64_t>(std::floor(uv.y * scale_));
-    return ((i + j) & 1) == 0 ? even_ : odd_;
+namespace {
+
+/// ∫₀ˣ s, where the square wave s is +1 on [2k, 2k + 1) and −1 on [2k + 1, 2k + 2): a
+/// triangle wave between 0 and 1 of period 2.
+double square_wave_integral(double x) {
+    const double phase = x - 2.0 * std::floor(x / 2.0);
+    return phase < 1.0 ? phase : 2.0 - phase;
+}
+
+/// The mean of that square wave over [x − w/2, x + w/2]; the wave itself at w = 0.
+double box_filtered_square_wave(double x, double w) {
+    if (!(w > 1e-6)) return std::fmod(std::floor(x), 2.0) == 0.0 ? 1.0 : -1.0;
+    return (square_wave_integral(x + 0.5 * w) - square_wave_integral(x - 0.5 * w)) / w;
+}
+
+}  // namespace
+
+Color CheckerTexture::evaluate(const TextureQuery& q) const {
+    if (!std::isfinite(q.uv.x) || !std::isfinite(q.uv.y)) return even_;
+    // Square (i, j) is even where the two square waves agree (their product is +1).
+    const double w = double(q.uv_footprint) * scale_;
+    const double product =
+        box_filtered_square_wave(double(q.uv.x) * scale_, w) * box_filtered_square_wave(double(q.uv.y) * scale_, w);
+    const auto even_share = float(0.5 * (1.0 + product));
+    return even_ * even_share + odd_ * (1.0f - even_share);
 }
 
 std::unique_ptr<Texture> ImageTexture::from_params(const ParamTable& t, BuildContext& context) {

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for_each.h>
 
+#include <cmath>
 #include <unordered_set>
 
 namespace glint {
@@ -81,7 +82,7 @@ Color RenderScene::emitted_slow(uint32_t object, const Material& m, const Surfac
                                 const Vec3& wo) const {
     if (const AreaLight* light = area_light_of(object)) return light->emitted(si.p, si.geometric_normal, si.uv, wo);
     Color le = m.emission;
-    if (m.emission_texture) le *= m.emission_texture->evaluate(si.uv, si.p);
+    if (m.emission_texture) le *= m.emission_texture->evaluate(TextureQuery{si.uv, si.p, si.uv_footprint});
     return le;
 }
 
@@ -157,6 +158,13 @@ SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) cons
         si.p = world_from_object.point(si.p);
         si.geometric_normal = normalize(world_from_object.normal(si.geometric_normal));
         si.shading_normal = normalize(world_from_object.normal(si.shading_normal));
+        // The derivatives are tangent vectors; the curvature scales as 1/length, here by the
+        // square root of the area scale of the tangent plane (exact for a uniform scale).
+        const float object_area = length(cross(si.dpdu, si.dpdv));
+        si.dpdu = world_from_object.vector(si.dpdu);
+        si.dpdv = world_from_object.vector(si.dpdv);
+        const float world_area = length(cross(si.dpdu, si.dpdv));
+        if (object_area > 0.0f && world_area > 0.0f) si.curvature *= std::sqrt(object_area / world_area);
         si.front_face = dot(ray.direction, si.geometric_normal) < 0.0f;
     }
     si.time = ray.time;

@@ -37,6 +37,16 @@ struct SurfaceInteraction {
     /// Unit interpolated normal, flipped if needed to lie on geometric_normal's side.
     Vec3 shading_normal;
     Vec2 uv;
+    /// ∂p/∂u and ∂p/∂v: how the point moves with the texture coordinates (pbrt-v4's
+    /// SurfaceInteraction), zero where the shape has no such map. Their cross product's length
+    /// is the surface area one unit of uv covers, which sets a texture lookup's footprint.
+    Vec3 dpdu, dpdv;
+    /// How fast the normal turns along the surface (1/radius: 1/r on a sphere, 0 on a plane),
+    /// an isotropic estimate; it widens a ray cone reflected or refracted here.
+    float curvature = 0.0f;
+    /// The width, in units of uv, of the surface region the ray's cone covers here
+    /// (integrators/ray_cone.h): set by the integrator, 0 for a point lookup.
+    float uv_footprint = 0.0f;
     /// The mesh's interpolated vertex colour (linear), white where it has none.
     Color vertex_color{1.0f};
     /// True if the ray arrived from the side geometric_normal points to.

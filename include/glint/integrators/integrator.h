@@ -3,6 +3,7 @@
 
 #include "glint/image/aov_film.h"
 #include "glint/image/film.h"
+#include "glint/integrators/ray_cone.h"
 #include "glint/integrators/ray_tree.h"
 #include "glint/integrators/render_settings.h"
 #include "glint/integrators/tile_grid.h"
@@ -65,6 +66,10 @@ struct TraceContext {
     /// Whitted: true while tracing below a glossy sample, where glossy lobes take one sample
     /// instead of glossy_samples, so a ray tree branches N ways once rather than N^depth.
     bool below_glossy = false;
+    /// The cone of the ray about to be traced (integrators/ray_cone.h): the camera ray's at
+    /// first; an integrator moves it along each ray and bounces it at each hit, so texture
+    /// lookups filter what a pixel sample covers. Here for the reason `branch` is.
+    RayCone cone = {};
 };
 
 /// The threads this machine runs at once; more would not render faster.

@@ -3,7 +3,9 @@
 /// Whitted ambient term and the albedo AOV take kd, ka, kr and the roughness from here, so
 /// that a texture driving any of them reaches both integrators through one function.
 
+#include "glint/geometry/hit.h"
 #include "glint/materials/material.h"
+#include "glint/materials/texture.h"
 #include "glint/math/color.h"
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
@@ -21,19 +23,33 @@ struct MaterialAtHit {
     float roughness = 0.0f;
 };
 
-/// The values of a material with a metallic_roughness_texture at `uv`, where its base colour
-/// texture is `base_texture`. Out of line: only such materials pay for it.
-[[nodiscard]] MaterialAtHit metallic_roughness_at(const Material& m, const Color& base_texture, const Vec2& uv,
-                                                  const Vec3& p);
+/// The values of a material with a metallic_roughness_texture where `q` lands, where its base
+/// colour texture (times the vertex colour) is `base_texture`. Out of line: only such
+/// materials pay for it.
+[[nodiscard]] MaterialAtHit metallic_roughness_at(const Material& m, const Color& base_texture, const TextureQuery& q);
 
-/// `m` at texture coordinates `uv` (object-space point `p` for solid textures): without a
-/// metallic-roughness texture, kd and ka times the texture colour, kr and the roughness as
-/// they are. Inline: it runs at every hit.
-[[nodiscard]] inline MaterialAtHit material_at_hit(const Material& m, const Vec2& uv, const Vec3& p) {
+/// `m` where a lookup `q` lands, on a mesh whose interpolated vertex colour there is
+/// `vertex_color`: without a metallic-roughness texture, kd and ka times the texture colour
+/// and the vertex colour (they multiply the base colour, as glTF's COLOR_0 does and as
+/// Blender's and MeshLab's viewers show PLY colours), kr and the roughness as they are.
+/// Inline: it runs at every hit.
+[[nodiscard]] inline MaterialAtHit material_at_hit(const Material& m, const TextureQuery& q,
+                                                   const Color& vertex_color = Color(1.0f)) {
     // A fully transparent material has no diffuse lobe for the texture to tint: skip the lookup.
-    const Color texture = !m.texture || m.transparency >= 1.0f ? Color(1.0f) : m.texture->evaluate(uv, p);
-    if (m.metallic_roughness_texture) return metallic_roughness_at(m, texture, uv, p);
-    return {m.diffuse * texture, m.ambient * texture, m.reflectivity, m.roughness};
+    const Color base = m.transparency >= 1.0f ? Color(1.0f) : m.texture ? m.texture->evaluate(q) * vertex_color
+                                                                        : vertex_color;
+    if (m.metallic_roughness_texture) return metallic_roughness_at(m, base, q);
+    return {m.diffuse * base, m.ambient * base, m.reflectivity, m.roughness};
+}
+
+/// `m` at a hit: its texture coordinates, the footprint the integrator set and its vertex colour.
+[[nodiscard]] inline MaterialAtHit material_at_hit(const Material& m, const SurfaceInteraction& si) {
+    return material_at_hit(m, TextureQuery{si.uv, si.p, si.uv_footprint}, si.vertex_color);
+}
+
+/// `m` at texture coordinates `uv` (object-space point `p`), looked up at a point.
+[[nodiscard]] inline MaterialAtHit material_at_hit(const Material& m, const Vec2& uv, const Vec3& p) {
+    return material_at_hit(m, TextureQuery{uv, p, 0.0f});
 }
 
 }  // namespace glint

@@ -3,6 +3,7 @@
 
 #include "glint/image/image.h"
 #include "glint/image/image_sampling.h"
+#include "glint/image/mip_map.h"
 #include "glint/math/color.h"
 #include "glint/math/vec2.h"
 #include "glint/math/vec3.h"
@@ -15,11 +16,23 @@ namespace glint {
 class BuildContext;
 class ParamTable;
 
+/// Where a texture is looked up, and over how much of it.
+struct TextureQuery {
+    Vec2 uv;
+    /// The point, for solid textures.
+    Vec3 p;
+    /// The width, in units of uv, of the region a pixel sample covers there (the ray cone's
+    /// footprint, integrators/ray_cone.h): a filtered texture averages over it. 0: a point.
+    float uv_footprint = 0.0f;
+};
+
 class Texture {
 public:
     virtual ~Texture() = default;
-    /// Linear RGB at texture coordinates `uv` (object-space point `p` for solid textures).
-    [[nodiscard]] virtual Color evaluate(const Vec2& uv, const Vec3& p) const = 0;
+    /// Linear RGB over the footprint of `q`.
+    [[nodiscard]] virtual Color evaluate(const TextureQuery& q) const = 0;
+    /// Linear RGB at the point `uv` (object-space point `p` for solid textures).
+    [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const { return evaluate(TextureQuery{uv, p, 0.0f}); }
     /// Coverage in [0, 1] (alpha masks); 1 where the texture has no alpha.
     [[nodiscard]] virtual float alpha(const Vec2& /*uv*/) const { return 1.0f; }
     [[nodiscard]] virtual std::string_view type_name() const = 0;
@@ -28,14 +41,19 @@ public:
     [[nodiscard]] virtual bool is_view() const { return false; }
 };
 
-/// An image looked up with bilinear filtering. v = 0 is the top row of the image
-/// (the glTF/OBJ-after-flip convention; loaders flip where their format differs).
+/// An image, filtered trilinearly over a MIP pyramid (image/mip_map.h): bilinear in the two
+/// levels whose texel size brackets the footprint, blended by the fraction between them
+/// (Williams 1983), so that a texture seen from afar averages instead of aliasing. v = 0 is
+/// the top row of the image (the glTF/OBJ-after-flip convention; loaders flip where their
+/// format differs). The alpha channel is looked up in the full-resolution image: cut-outs
+/// keep their edges.
 class ImageTexture final : public Texture {
 public:
     ImageTexture(std::shared_ptr<const Image> image, WrapMode wrap = WrapMode::Repeat, Color scale = Color(1.0f));
     /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
     [[nodiscard]] static std::unique_ptr<Texture> from_params(const ParamTable& params, BuildContext& context);
-    [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const override;
+    using Texture::evaluate;
+    [[nodiscard]] Color evaluate(const TextureQuery& q) const override;
     [[nodiscard]] float alpha(const Vec2& uv) const override;
     [[nodiscard]] std::string_view type_name() const override { return "image"; }
     [[nodiscard]] const Image& image() const { return *image_; }
@@ -45,17 +63,22 @@ private:
     void lookup(const Vec2& uv, int first, int count, float* out) const;
 
     std::shared_ptr<const Image> image_;
+    MipMap mip_map_;
     WrapMode wrap_;
     Color scale_;
 };
 
-/// Alternating squares: `scale` squares per unit of u and v.
+/// Alternating squares: `scale` squares per unit of u and v. A lookup with a footprint is
+/// the exact average of the squares over a box that wide (the closed-form box-filtered
+/// checkerboard: the filter is separable, so the average of the ±1 product of two square
+/// waves is the product of their averages, each a difference of a triangle wave).
 class CheckerTexture final : public Texture {
 public:
     CheckerTexture(Color even, Color odd, float scale) : even_(even), odd_(odd), scale_(scale) {}
     /// The scene-file factory (docs/scene-format.md): reads its keys, throws SceneError at a bad one.
     [[nodiscard]] static std::unique_ptr<Texture> from_params(const ParamTable& params, BuildContext& context);
-    [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const override;
+    using Texture::evaluate;
+    [[nodiscard]] Color evaluate(const TextureQuery& q) const override;
     [[nodiscard]] std::string_view type_name() const override { return "checker"; }
 
 private:
