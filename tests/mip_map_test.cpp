@@ -1,0 +1,134 @@
+// The MIP pyramid and the filtered checkerboard against closed forms: every level keeps the
+// image's mean, a footprint covering the texture returns that mean, and the box-filtered
+// checkerboard equals a dense numerical average of the point-sampled one.
+
+#include "glint/image/mip_map.h"
+#include "glint/materials/texture.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+using namespace glint;
+
+namespace {
+
+/// A w×h RGB image of pseudo-random values in [0, 1) (a fixed LCG: the same image each run).
+std::shared_ptr<const Image> noise_image(int w, int h) {
+    auto image = std::make_shared<Image>(w, h, 3);
+    uint32_t state = 12345u;
+    for (float& v : image->pixels) {
+        state = state * 1664525u + 1013904223u;
+        v = float(state >> 8) / float(1u << 24);
+    }
+    return image;
+}
+
+double mean_of(const Image& image, int channel) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) sum += image.at(x, y, channel);
+    return sum / (double(image.width) * image.height);
+}
+
+}  // namespace
+
+TEST(MipMap, HalvesEachAxisDownToOneTexel) {
+    const MipMap mip(noise_image(13, 6));
+    ASSERT_EQ(mip.levels(), 4u);  // 13×6 → 6×3 → 3×1 → 1×1
+    EXPECT_EQ(mip.level(1).width, 6);
+    EXPECT_EQ(mip.level(1).height, 3);
+    EXPECT_EQ(mip.level(2).width, 3);
+    EXPECT_EQ(mip.level(2).height, 1);
+    EXPECT_EQ(mip.level(mip.levels() - 1).width, 1);
+    EXPECT_EQ(mip.level(mip.levels() - 1).height, 1);
+}
+
+TEST(MipMap, EveryLevelKeepsTheMeanForOddSizesToo) {
+    // Odd sizes make output texels straddle input texels: only exact fractional weights keep
+    // the mean (dropping the partial texels or weighting them whole moves it).
+    const auto image = noise_image(13, 7);
+    const MipMap mip(image);
+    for (std::size_t i = 1; i < mip.levels(); ++i)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean_of(mip.level(i), c), mean_of(*image, c), 1e-5) << "level " << i;
+}
+
+TEST(MipMap, LevelOfDetailIsLog2OfTheTexelsTheFootprintSpans) {
+    const MipMap mip(noise_image(64, 32));
+    EXPECT_FLOAT_EQ(mip.level_of_detail(0.0f), 0.0f);
+    EXPECT_FLOAT_EQ(mip.level_of_detail(1.0f / 64.0f), 0.0f);  // one texel of the longer side
+    EXPECT_FLOAT_EQ(mip.level_of_detail(4.0f / 64.0f), 2.0f);
+    EXPECT_FLOAT_EQ(mip.level_of_detail(1.0f / 128.0f), 0.0f);  // magnified: the image itself
+    EXPECT_FLOAT_EQ(mip.level_of_detail(1e9f), float(mip.levels() - 1));
+    EXPECT_FLOAT_EQ(mip.level_of_detail(std::numeric_limits<float>::infinity()), float(mip.levels() - 1));
+}
+
+TEST(MipMap, AFootprintAsWideAsTheTextureGivesItsMean) {
+    const auto image = noise_image(16, 16);
+    const MipMap mip(image);
+    const Color c = mip.sample_color(Vec2(0.3f, 0.7f), 1.0f, WrapMode::Repeat);
+    EXPECT_NEAR(c.r, mean_of(*image, 0), 1e-5);
+    EXPECT_NEAR(c.g, mean_of(*image, 1), 1e-5);
+    EXPECT_NEAR(c.b, mean_of(*image, 2), 1e-5);
+}
+
+TEST(MipMap, APointLookupIsBilinearInTheImage) {
+    const auto image = noise_image(16, 8);
+    const MipMap mip(image);
+    const Vec2 uv(0.37f, 0.61f);
+    const Color bilinear = sample_bilinear_color(*image, uv, WrapMode::Repeat, WrapMode::Repeat);
+    const Color point = mip.sample_color(uv, 0.0f, WrapMode::Repeat);
+    EXPECT_EQ(point.r, bilinear.r);
+    EXPECT_EQ(point.g, bilinear.g);
+    EXPECT_EQ(point.b, bilinear.b);
+}
+
+TEST(MipMap, BlendsLinearlyBetweenTheTwoLevelsAroundTheLevelOfDetail) {
+    const MipMap mip(noise_image(32, 32));
+    const Vec2 uv(0.4f, 0.55f);
+    const float width = std::exp2(1.25f) / 32.0f;  // level of detail 1.25
+    const Color l1 = sample_bilinear_color(mip.level(1), uv, WrapMode::Repeat, WrapMode::Repeat);
+    const Color l2 = sample_bilinear_color(mip.level(2), uv, WrapMode::Repeat, WrapMode::Repeat);
+    const Color c = mip.sample_color(uv, width, WrapMode::Repeat);
+    EXPECT_NEAR(c.r, 0.75f * l1.r + 0.25f * l2.r, 1e-5f);
+    EXPECT_NEAR(c.g, 0.75f * l1.g + 0.25f * l2.g, 1e-5f);
+}
+
+TEST(FilteredChecker, AFootprintOfWholePeriodsIsTheMeanColour) {
+    const CheckerTexture checks(Color(1.0f), Color(0.0f), 4.0f);
+    for (float u : {0.0f, 0.13f, 0.5f, 0.91f, -3.3f})
+        for (float v : {0.0f, 0.27f, 0.8f})
+            EXPECT_NEAR(checks.evaluate(TextureQuery{Vec2(u, v), Vec3(), 0.5f}).r, 0.5f, 1e-5f) << u << ", " << v;
+}
+
+TEST(FilteredChecker, EqualsTheAverageOfPointSamplesOverTheBox) {
+    // The closed form against a midpoint rule of the unfiltered checkerboard over the same
+    // square box (1000² points: error below 1/500 for a box crossing a few edges).
+    const CheckerTexture checks(Color(0.9f), Color(0.1f), 3.0f);
+    const struct {
+        float u, v, width;
+    } cases[] = {{0.1f, 0.2f, 0.2f}, {0.52f, 0.33f, 0.45f}, {-0.4f, 1.7f, 0.9f}, {0.34f, 0.34f, 0.05f}};
+    for (const auto& c : cases) {
+        constexpr int n = 1000;
+        double sum = 0.0;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const float u = c.u + c.width * ((float(i) + 0.5f) / n - 0.5f);
+                const float v = c.v + c.width * ((float(j) + 0.5f) / n - 0.5f);
+                sum += checks.evaluate(Vec2(u, v), Vec3()).r;
+            }
+        const float numeric = float(sum / (double(n) * n));
+        EXPECT_NEAR(checks.evaluate(TextureQuery{Vec2(c.u, c.v), Vec3(), c.width}).r, numeric, 2e-3f)
+            << c.u << ", " << c.v << " over " << c.width;
+    }
+}
+
+TEST(FilteredChecker, APointLookupIsTheSquareItFallsIn) {
+    const CheckerTexture checks(Color(0.9f), Color(0.1f), 2.0f);
+    EXPECT_EQ(checks.evaluate(Vec2(0.1f, 0.1f), Vec3()).r, 0.9f);   // square (0, 0)
+    EXPECT_EQ(checks.evaluate(Vec2(0.6f, 0.1f), Vec3()).r, 0.1f);   // (1, 0)
+    EXPECT_EQ(checks.evaluate(Vec2(-0.1f, 0.1f), Vec3()).r, 0.1f);  // (−1, 0)
+    EXPECT_EQ(checks.evaluate(Vec2(-0.1f, -0.1f), Vec3()).r, 0.9f); // (−1, −1)
+}
