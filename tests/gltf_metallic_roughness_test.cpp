@@ -4,7 +4,7 @@
 // Checked through material_at_hit, the function both integrators build their Bsdf from, and
 // by rendering.
 
-#include "gltf_test_files.h"
+#include "gltf_texture_files.h"
 
 #include "glint/assets/gltf_scene_loader.h"
 #include "glint/image/film.h"
@@ -15,8 +15,6 @@
 #include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
-
-#include <OpenImageIO/imageio.h>
 
 #include <array>
 #include <filesystem>
@@ -29,7 +27,9 @@ using glint::Color;
 using glint::Vec2;
 using nlohmann::json;
 
-using Texel = std::array<unsigned char, 3>;
+using glint_test::quad_json_with;
+using glint_test::Texel;
+using glint_test::write_png;
 
 /// Texture coordinates of the centres of the left and right texel of a 2×1 texture, and of
 /// the one texel of a 1×1 texture: bilinear lookups there return the texel unblended.
@@ -37,33 +37,6 @@ const Vec2 kLeft(0.25f, 0.5f), kRight(0.75f, 0.5f), kCentre(0.5f, 0.5f);
 
 /// An 8-bit texel value read as data.
 float data(unsigned char v) { return float(v) / 255.0f; }
-
-/// Write `texels` (left to right, one row) as an 8-bit RGB PNG; returns the file's bytes. The
-/// bytes go to the file as they are, with no colour conversion on the way.
-std::string write_png(const std::filesystem::path& path, const std::vector<Texel>& texels) {
-    auto out = OIIO::ImageOutput::create(path.string());
-    const OIIO::ImageSpec spec(int(texels.size()), 1, 3, OIIO::TypeDesc::UINT8);
-    EXPECT_TRUE(out && out->open(path.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, texels.data()));
-    if (out) out->close();
-    return glint_test::read_file(path);
-}
-
-/// The test quad with `material` as its only material and one texture per file in `images`
-/// (texture i shows image i). Its texture coordinates reuse the positions' bytes: these
-/// tests look textures up at chosen coordinates, or render uniform ones.
-json quad_json_with(const json& material, const std::vector<std::string>& images) {
-    json j = glint_test::quad_json("quad.bin");
-    j["accessors"].push_back({{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
-    j["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2;
-    j["images"] = json::array();
-    j["textures"] = json::array();
-    for (std::size_t i = 0; i < images.size(); ++i) {
-        j["images"].push_back({{"uri", images[i]}});
-        j["textures"].push_back({{"source", i}});
-    }
-    j["materials"][0] = material;
-    return j;
-}
 
 /// A metallic-roughness material on texture 0 with these factors.
 json textured(float metallic, float roughness, const json& base = {0.8, 0.6, 0.4, 1.0}) {

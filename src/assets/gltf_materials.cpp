@@ -2,10 +2,12 @@
 
 #include "glint/image/image_io.h"
 #include "glint/materials/metallic_roughness.h"
+#include "glint/materials/uv_transform_texture.h"
 
 #include "glint/diagnostics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -25,12 +27,75 @@ const nlohmann::json& extension(const nlohmann::json& material, const char* name
     return empty;
 }
 
+/// A value as an error message shows it: numbers and short arrays as written, anything
+/// else by its type (it may be large or deeply nested).
+std::string shown(const nlohmann::json& value) {
+    const std::string text = value.dump();
+    return text.size() <= 40 ? text : std::string(value.type_name());
+}
+
+/// True if `value` is a number a float holds (finite, at most FLT_MAX: a cast of a larger
+/// double is undefined), stored in `out`.
+bool finite_float(const nlohmann::json& value, float& out) {
+    if (!value.is_number()) return false;
+    const double d = value.get<double>();
+    if (!std::isfinite(d) || std::abs(d) > double(std::numeric_limits<float>::max())) return false;
+    out = float(d);
+    return true;
+}
+
+/// `object[key]` as two finite floats, `fallback` when absent; SceneError naming `where.key`
+/// otherwise (the KHR_texture_transform schema: "number[2]").
+Vec2 two_numbers(const Document& doc, const nlohmann::json& object, const char* key, Vec2 fallback,
+                 const std::string& where) {
+    if (!object.contains(key)) return fallback;
+    const nlohmann::json& value = object.at(key);
+    Vec2 result;
+    if (!value.is_array() || value.size() != 2 || !finite_float(value[0], result.x) ||
+        !finite_float(value[1], result.y))
+        fail(doc.path, where + "." + key + ": " + shown(value) + " (expected two finite numbers)");
+    return result;
+}
+
+/// The six numbers of a map, to tell maps apart in a cache.
+std::array<float, 6> coefficients(const UvAffineMap& map) {
+    return {map.m[0][0], map.m[0][1], map.m[0][2], map.m[1][0], map.m[1][1], map.m[1][2]};
+}
+
+/// The uv map of textureInfo `info` at JSON path `where` from its KHR_texture_transform
+/// (T·R·S, materials/uv_transform_texture.h), none without the extension; the extension's
+/// texCoord replaces `tex_coord`. Malformed values are SceneErrors naming their JSON path.
+std::optional<UvAffineMap> texture_transform(const Document& doc, const nlohmann::json& info,
+                                             const std::string& where, int& tex_coord) {
+    if (!info.contains("extensions") || !info.at("extensions").contains("KHR_texture_transform"))
+        return std::nullopt;
+    const std::string at = where + ".extensions.KHR_texture_transform";
+    const nlohmann::json& ext = info.at("extensions").at("KHR_texture_transform");
+    if (!ext.is_object()) fail(doc.path, at + ": " + shown(ext) + " (expected an object)");
+    const Vec2 offset = two_numbers(doc, ext, "offset", Vec2(0.0f, 0.0f), at);
+    const Vec2 scale = two_numbers(doc, ext, "scale", Vec2(1.0f, 1.0f), at);
+    float rotation = 0.0f;
+    if (ext.contains("rotation")) {
+        const nlohmann::json& r = ext.at("rotation");
+        if (!finite_float(r, rotation))
+            fail(doc.path, at + ".rotation: " + shown(r) + " (expected a finite number of radians)");
+    }
+    // "texCoord: overrides the textureInfo texCoord value if supplied" (the extension's README).
+    if (ext.contains("texCoord")) {
+        const nlohmann::json& t = ext.at("texCoord");
+        if (!t.is_number_integer() || t.get<long long>() < 0)
+            fail(doc.path, at + ".texCoord: " + shown(t) + " (expected an integer >= 0)");
+        tex_coord = int(std::min<long long>(t.get<long long>(), std::numeric_limits<int>::max()));
+    }
+    return UvAffineMap::offset_rotation_scale(offset, rotation, scale);
+}
+
 }  // namespace
 
 bool is_mapped_material_extension(const std::string& name) {
     return name == "KHR_materials_transmission" || name == "KHR_materials_ior" ||
            name == "KHR_materials_emissive_strength" || name == "KHR_materials_volume" ||
-           name == "KHR_materials_specular";
+           name == "KHR_materials_specular" || name == "KHR_texture_transform";
 }
 
 void MaterialConverter::convert_all() {
@@ -62,13 +127,26 @@ std::shared_ptr<const Image> MaterialConverter::image(int index, ColorEncoding e
 }
 
 const Texture* MaterialConverter::texture(const nlohmann::json& info, const std::string& material_name,
-                                          const char* slot, ColorEncoding encoding) {
+                                          const std::string& where, ColorEncoding encoding) {
     if (!info.is_object() || !info.contains("index")) return nullptr;
-    if (integer_or<int>(info, "texCoord", 0) != 0)
-        notes_.ignored(std::string("texCoord set other than 0 (") + slot + "): set 0 used", material_name);
-    if (info.contains("extensions") && info.at("extensions").contains("KHR_texture_transform"))
-        notes_.ignored("KHR_texture_transform (texture offset/scale/rotation)", material_name);
-    const int t = integer<int>(info.at("index"));
+    int tex_coord = integer_or<int>(info, "texCoord", 0);
+    const std::optional<UvAffineMap> transform = texture_transform(doc_, info, where, tex_coord);
+    if (tex_coord != 0) {
+        const std::string slot = where.substr(where.find_last_of('.') + 1);
+        notes_.ignored("texCoord set other than 0 (" + slot + "): set 0 used", material_name);
+    }
+    const Texture* base = image_texture(integer<int>(info.at("index")), material_name, encoding);
+    // The identity leaves the texture as it is (offset 0, rotation 0, scale 1 are defaults).
+    if (!base || !transform || *transform == UvAffineMap{}) return base;
+    // One view per texture, decoding and map, owned by the scene beside the texture it maps.
+    const auto key = std::make_pair(base, coefficients(*transform));
+    auto it = views_.find(key);
+    if (it == views_.end())
+        it = views_.emplace(key, scene_.add_texture(std::make_unique<UvTransformTexture>(base, *transform))).first;
+    return it->second;
+}
+
+const Texture* MaterialConverter::image_texture(int t, const std::string& material_name, ColorEncoding encoding) {
     auto it = textures_.find({t, encoding});
     if (it != textures_.end()) return it->second;
     const Texture* result = nullptr;
@@ -138,8 +216,10 @@ MaterialInfo MaterialConverter::convert(int index) {
     }
     const float metallic = std::clamp(pbr.value("metallicFactor", 1.0f), 0.0f, 1.0f);
     const float roughness = std::clamp(pbr.value("roughnessFactor", 1.0f), 0.0f, 1.0f);
-    const Texture* base_texture =
-        texture(pbr.value("baseColorTexture", nlohmann::json()), name, "baseColorTexture", ColorEncoding::Color);
+    // JSON paths of the textureInfo objects, for errors in their KHR_texture_transform.
+    const std::string at = "materials[" + std::to_string(index) + "]";
+    const Texture* base_texture = texture(pbr.value("baseColorTexture", nlohmann::json()), name,
+                                          at + ".pbrMetallicRoughness.baseColorTexture", ColorEncoding::Color);
 
     // Metallic-roughness on Glint's lobes (glTF 2.0, Appendix B; materials/metallic_roughness.h):
     // one GGX lobe of the file's roughness (alpha = roughness², as glTF defines it) with Schlick
@@ -159,7 +239,7 @@ MaterialInfo MaterialConverter::convert(int index) {
     // schema), so its image is read as data; they multiply the factors at each hit
     // (materials/material_at_hit.h), so the material keeps them.
     m.metallic_roughness_texture = texture(pbr.value("metallicRoughnessTexture", nlohmann::json()), name,
-                                           "metallicRoughnessTexture", ColorEncoding::Data);
+                                           at + ".pbrMetallicRoughness.metallicRoughnessTexture", ColorEncoding::Data);
     m.base_color = base;
     m.metallic = metallic;
 
@@ -167,7 +247,7 @@ MaterialInfo MaterialConverter::convert(int index) {
     const float strength = extension(j, "KHR_materials_emissive_strength").value("emissiveStrength", 1.0f);
     m.emission = color3(j, "emissiveFactor", Color(0.0f)) * strength;
     if (j.contains("emissiveTexture")) {
-        m.emission_texture = texture(j.at("emissiveTexture"), name, "emissiveTexture", ColorEncoding::Color);
+        m.emission_texture = texture(j.at("emissiveTexture"), name, at + ".emissiveTexture", ColorEncoding::Color);
         if (m.emission.is_black() && m.emission_texture) m.emission_texture = nullptr;  // factor 0 turns it off
     }
 

@@ -8,6 +8,7 @@
 #include "glint/scene/scene.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -16,7 +17,8 @@
 
 namespace glint::gltf {
 
-/// Material extensions whose content the converter reads (fully or in part, docs/assets.md).
+/// Material extensions, and KHR_texture_transform on their textures, whose content the
+/// converter reads (fully or in part, docs/assets.md).
 [[nodiscard]] bool is_mapped_material_extension(const std::string& name);
 
 /// A converted material and what the mesh using it must know.
@@ -42,6 +44,8 @@ public:
     [[nodiscard]] std::size_t texture_count() const {
         return std::size_t(std::count_if(textures_.begin(), textures_.end(), [](const auto& t) { return t.second; }));
     }
+    /// Distinct KHR_texture_transform views (a texture, decoding and map each) added to the scene.
+    [[nodiscard]] std::size_t transformed_view_count() const { return views_.size(); }
 
 private:
     MaterialInfo convert(int index);
@@ -49,11 +53,14 @@ private:
     Color dielectric_f0(const nlohmann::json& material, float ior, const std::string& name);
     /// σa from KHR_materials_volume (black without it).
     Color volume_absorption(const nlohmann::json& material, const std::string& name);
-    /// Texture `info` ({"index", "texCoord"}) as a scene texture, its image decoded with
-    /// `encoding` (sRGB colour, or linear data such as metalness and roughness); null (with a
-    /// warning) when it cannot be decoded.
-    const Texture* texture(const nlohmann::json& info, const std::string& material_name, const char* slot,
+    /// Texture `info` ({"index", "texCoord", "extensions"}, at JSON path `where`) as a scene
+    /// texture, its image decoded with `encoding` (sRGB colour, or linear data such as
+    /// metalness and roughness), seen through its KHR_texture_transform if it has one; null
+    /// (with a warning) when it cannot be decoded.
+    const Texture* texture(const nlohmann::json& info, const std::string& material_name, const std::string& where,
                            ColorEncoding encoding);
+    /// Texture `index` of the file decoded with `encoding`, untransformed (cached).
+    const Texture* image_texture(int index, const std::string& material_name, ColorEncoding encoding);
     std::shared_ptr<const Image> image(int index, ColorEncoding encoding);
 
     const Document& doc_;
@@ -64,6 +71,9 @@ private:
     /// used as base colour by one material and as metallic-roughness by another).
     std::map<std::pair<int, ColorEncoding>, const Texture*> textures_;
     std::map<std::pair<int, ColorEncoding>, std::shared_ptr<const Image>> images_;
+    /// KHR_texture_transform views (UvTransformTexture) by the texture they map and their map's
+    /// coefficients: textureInfos that transform a texture alike share one view.
+    std::map<std::pair<const Texture*, std::array<float, 6>>, const Texture*> views_;
 };
 
 }  // namespace glint::gltf

@@ -290,6 +290,8 @@ GltfScene load(const std::filesystem::path& path, const GltfOptions& options) {
     notes.mapped("materials: " + std::to_string(report.materials) + " converted" +
                  (report.default_material ? " (+ the glTF default material)" : "") + ", " +
                  std::to_string(report.textures) + " texture(s)");
+    if (const std::size_t views = materials.transformed_view_count(); views > 0)
+        notes.mapped("KHR_texture_transform: " + std::to_string(views) + " texture(s) seen through a uv transform");
     if (single_sided > 0)
         notes.mapped("doubleSided: " + std::to_string(single_sided) +
                      " single-sided material(s) drawn two-sided (no back-face culling; exact for closed meshes)");
