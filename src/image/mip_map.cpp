@@ -2,27 +2,56 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace glint {
 
 namespace {
 
-/// `source` resampled to `count` columns (or rows): output column i is the area average of
-/// the source over [i·s, (i + 1)·s) with s = source.width / count, texels partly inside
-/// weighted by the part (a box filter with exact coverage, which keeps the mean for any ratio).
-Image shrink(const Image& source, int count, bool columns) {
-    const int n = columns ? source.width : source.height;
-    const int across = columns ? source.height : source.width;
-    Image out(columns ? count : source.width, columns ? source.height : count, source.channels);
+/// The source texels output texel i of `count` covers when `n` texels shrink to `count`:
+/// [i·s, (i + 1)·s) with s = n / count, each weighted by the part of it inside, over s (a box
+/// filter with exact coverage, which keeps the mean for any ratio).
+struct Footprint {
+    int first = 0;
+    std::vector<float> weights;
+};
+
+std::vector<Footprint> footprints(int n, int count) {
+    std::vector<Footprint> out(static_cast<std::size_t>(count));
     const double step = double(n) / double(count);
     for (int i = 0; i < count; ++i) {
         const double begin = i * step, end = (i + 1) * step;
-        for (int s = int(begin); s < std::min(int(std::ceil(end)), n); ++s) {
-            const auto weight = float((std::min(end, double(s + 1)) - std::max(begin, double(s))) / step);
-            for (int a = 0; a < across; ++a)
-                for (int c = 0; c < source.channels; ++c)
-                    (columns ? out.at(i, a, c) : out.at(a, i, c)) +=
-                        weight * (columns ? source.at(s, a, c) : source.at(a, s, c));
+        out[std::size_t(i)].first = int(begin);
+        for (int s = int(begin); s < std::min(int(std::ceil(end)), n); ++s)
+            out[std::size_t(i)].weights.push_back(
+                float((std::min(end, double(s + 1)) - std::max(begin, double(s))) / step));
+    }
+    return out;
+}
+
+/// `source` resampled to `count` columns (`columns`) or rows, box-filtered as footprints()
+/// says. Both passes walk the pixels row by row, so neither strides through memory.
+Image shrink(const Image& source, int count, bool columns) {
+    const int channels = source.channels;
+    Image out(columns ? count : source.width, columns ? source.height : count, channels);
+    const std::vector<Footprint> taps = footprints(columns ? source.width : source.height, count);
+    if (columns) {
+        for (int y = 0; y < source.height; ++y)
+            for (int i = 0; i < count; ++i) {
+                const Footprint& f = taps[std::size_t(i)];
+                for (std::size_t k = 0; k < f.weights.size(); ++k)
+                    for (int c = 0; c < channels; ++c)
+                        out.at(i, y, c) += f.weights[k] * source.at(f.first + int(k), y, c);
+            }
+        return out;
+    }
+    const std::size_t row = std::size_t(source.width) * std::size_t(channels);
+    for (int j = 0; j < count; ++j) {
+        const Footprint& f = taps[std::size_t(j)];
+        float* to = &out.pixels[std::size_t(j) * row];
+        for (std::size_t k = 0; k < f.weights.size(); ++k) {
+            const float* from = &source.pixels[std::size_t(f.first + int(k)) * row];
+            for (std::size_t x = 0; x < row; ++x) to[x] += f.weights[k] * from[x];
         }
     }
     return out;
