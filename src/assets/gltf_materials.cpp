@@ -282,7 +282,22 @@ MaterialInfo MaterialConverter::convert(int index) {
             }
         }
     }
-    if (j.contains("normalTexture")) notes_.ignored("normalTexture (no normal mapping; geometric normals used)", name);
+    // normalTexture (glTF 2.0 §3.9.3): tangent-space normals, linear, x and y scaled by `scale`,
+    // in the frame of the TANGENT attribute or, without one, of MikkTSpace tangents
+    // (geometry/tangent_space.h computes them for every mesh with uvs and normals).
+    if (j.contains("normalTexture")) {
+        const nlohmann::json& normal_info = j.at("normalTexture");
+        m.normal_texture = texture(normal_info, name, at + ".normalTexture", ColorEncoding::Data);
+        if (m.normal_texture && m.normal_texture->channel_count() < 3)
+            fail(doc_.path, at + ".normalTexture: its image has " + std::to_string(m.normal_texture->channel_count()) +
+                                " channel(s) (expected three, RGB: a tangent-space normal map)");
+        if (normal_info.is_object() && normal_info.contains("scale")) {
+            const nlohmann::json& scale = normal_info.at("scale");
+            if (!scale.is_number() || !std::isfinite(scale.get<double>()))
+                fail(doc_.path, at + ".normalTexture.scale: " + shown(scale) + " (expected a finite number)");
+            m.normal_scale = scale.get<float>();
+        }
+    }
     if (j.contains("occlusionTexture")) notes_.ignored("occlusionTexture (no ambient occlusion)", name);
     if (j.contains("extensions"))
         for (const auto& [ext, value] : j.at("extensions").items())

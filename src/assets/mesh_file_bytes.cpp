@@ -12,7 +12,7 @@ namespace {
 // A field added to Material must be handed over too (or be a texture, which the parent
 // makes from material_images): this fails to compile until write_material/read_material
 // have been looked at.
-static_assert(sizeof(Material) == 192, "Material changed: update write_material and read_material");
+static_assert(sizeof(Material) == 208, "Material changed: update write_material and read_material");
 
 void write_material(ByteWriter& w, const Material& m) {
     w.text(m.name);
@@ -26,6 +26,7 @@ void write_material(ByteWriter& w, const Material& m) {
     w.value(m.ior);
     w.value(m.emission);
     w.value(m.alpha_cutoff);
+    w.value(m.normal_scale);
     w.value(m.roughness);
     w.value(m.base_color);
     w.value(m.metallic);
@@ -46,6 +47,7 @@ Material read_material(ByteReader& r) {
     m.ior = r.value<float>();
     m.emission = r.value<Color>();
     m.alpha_cutoff = r.value<float>();
+    m.normal_scale = r.value<float>();
     m.roughness = r.value<float>();
     m.base_color = r.value<Color>();
     m.metallic = r.value<float>();

@@ -41,10 +41,12 @@ TriangleMesh::TriangleMesh(MeshData data, std::string name) : data_(std::move(da
     check_size(data_.uvs.size(), "texture coordinates");
     check_size(data_.colors.size(), "vertex colours");
     check_size(data_.vertex_materials.size(), "vertex materials");
+    check_size(data_.tangents.size(), "tangents");
     for (auto& n : data_.normals) {
         const float len = length(n);
         n = (len > 0.0f && std::isfinite(len)) ? n / len : Vec3(0.0f);
     }
+    if (data_.tangents.empty()) data_.tangents = compute_tangents(data_);
     for (const Vec3& p : data_.positions) bounds_.extend(p);
 }
 
@@ -121,10 +123,13 @@ void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteractio
         if (len > 0.0f) ns = face_forward(interpolated / len, ng);
     }
     si.shading_normal = ns;
-    if (!data_.normals.empty()) {
-        auto unit = [](const Vec3& n) { return n / std::max(length(n), 1e-20f); };
-        si.curvature = triangle_curvature(p0, p1, p2, unit(data_.normals[idx[0]]), unit(data_.normals[idx[1]]),
-                                          unit(data_.normals[idx[2]]));
+    if (!data_.normals.empty())  // unit since construction
+        si.curvature =
+            triangle_curvature(p0, p1, p2, data_.normals[idx[0]], data_.normals[idx[1]], data_.normals[idx[2]]);
+    if (!data_.tangents.empty()) {
+        si.tangent = data_.tangents[idx[0]].direction * b0 + data_.tangents[idx[1]].direction * b1 +
+                     data_.tangents[idx[2]].direction * b2;
+        si.tangent_sign = data_.tangents[idx[0]].sign;
     }
     // Without texture coordinates the barycentric weights stand in for them.
     const bool has_uvs = !data_.uvs.empty();
@@ -181,7 +186,8 @@ std::optional<ShapeSample> TriangleMesh::sample_area(Vec2 u) const {
 std::size_t TriangleMesh::memory_bytes() const {
     return data_.positions.size() * sizeof(Vec3) + data_.indices.size() * sizeof(uint32_t) +
            data_.normals.size() * sizeof(Vec3) + data_.uvs.size() * sizeof(Vec2) + data_.colors.size() * sizeof(Color) +
-           data_.vertex_materials.size() * sizeof(uint32_t) + bvh_.memory_bytes();
+           data_.vertex_materials.size() * sizeof(uint32_t) + data_.tangents.size() * sizeof(Tangent) +
+           bvh_.memory_bytes();
 }
 
 void compute_smooth_normals(MeshData& data) {

@@ -2,6 +2,7 @@
 
 #include "glint/integrators/medium_absorption.h"
 #include "glint/integrators/shading_point.h"
+#include "glint/materials/normal_map.h"
 #include "glint/math/offset_ray.h"
 #include "glint/scene/render_scene.h"
 
@@ -81,6 +82,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         std::optional<Material> blended;
         if (si.blends_materials) blended = blended_material(scene, si);
         const Material& m = blended ? *blended : scene.material(si.materials[0]);
+        apply_normal_map(si, m);
         const ShadingPoint sp = shading_point(si, m, ray, media);
         if (context.tree) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], sp.n);
         if (depth == 0 && context.first_hit)

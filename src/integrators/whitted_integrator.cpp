@@ -3,6 +3,7 @@
 #include "glint/integrators/medium_absorption.h"
 #include "glint/integrators/shading_point.h"
 #include "glint/lights/area_light.h"
+#include "glint/materials/normal_map.h"
 #include "glint/math/offset_ray.h"
 #include "glint/scene/render_scene.h"
 
@@ -191,9 +192,14 @@ Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uin
     // Inside an absorbing dielectric the radiance from the hit loses exp(−σa·d) on the way.
     const Color kept = transmittance(scene, media, r.tmax);
     // Only hits on per-vertex materials build a (blended) Material.
-    if (si.blends_materials)
-        return kept * shade<Record>(scene, ray, hit.object, si, blended_material(scene, si), depth, media, context);
-    return kept * shade<Record>(scene, ray, hit.object, si, scene.material(si.materials[0]), depth, media, context);
+    if (si.blends_materials) {
+        const Material blended = blended_material(scene, si);
+        apply_normal_map(si, blended);
+        return kept * shade<Record>(scene, ray, hit.object, si, blended, depth, media, context);
+    }
+    const Material& m = scene.material(si.materials[0]);
+    apply_normal_map(si, m);
+    return kept * shade<Record>(scene, ray, hit.object, si, m, depth, media, context);
 }
 
 template <bool Record>

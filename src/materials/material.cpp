@@ -69,6 +69,12 @@ Material Material::standard_from_params(const ParamTable& t, const BuildContext&
     m.emission = t.color("emission", m.emission);
     m.emission_texture = context.texture(t, "emission_texture");
     m.alpha_texture = context.texture(t, "alpha_texture");
+    m.normal_texture = context.texture(t, "normal_texture");
+    if (m.normal_texture && m.normal_texture->channel_count() < 3)
+        t.fail("normal_texture", "a texture of tangent-space normals with three channels (RGB); this one has " +
+                                     std::to_string(m.normal_texture->channel_count()));
+    m.normal_scale = t.number("normal_scale", m.normal_scale);
+    if (!std::isfinite(m.normal_scale)) t.fail("normal_scale", "a finite number");
     m.alpha_cutoff = unit_interval(t, "alpha_cutoff", m.alpha_cutoff, "a coverage threshold");
     m.roughness = unit_interval(t, "roughness", m.roughness, "a roughness");
 

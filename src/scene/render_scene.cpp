@@ -163,6 +163,9 @@ SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) cons
         const float object_area = length(cross(si.dpdu, si.dpdv));
         si.dpdu = world_from_object.vector(si.dpdu);
         si.dpdv = world_from_object.vector(si.dpdv);
+        si.tangent = world_from_object.vector(si.tangent);
+        // A mirroring placement turns n × t the other way round.
+        if (world_from_object.swaps_handedness()) si.tangent_sign = -si.tangent_sign;
         const float world_area = length(cross(si.dpdu, si.dpdv));
         if (object_area > 0.0f && world_area > 0.0f) si.curvature *= std::sqrt(object_area / world_area);
         si.front_face = dot(ray.direction, si.geometric_normal) < 0.0f;

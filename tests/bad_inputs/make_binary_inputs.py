@@ -22,8 +22,8 @@ def png_chunk(kind, data):
     return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
 
 
-def png(width, height, rows):
-    ihdr = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
+def png(width, height, rows, colour_type=2):
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)  # 8-bit RGB (2) or grey (0)
     return (b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", ihdr) + png_chunk(b"IDAT", zlib.compress(rows)) +
             png_chunk(b"IEND", b""))
 
@@ -34,6 +34,8 @@ write("image/truncated.png", good[:45])  # signature, IHDR and half of the IDAT 
 # 2^31-1 × 2^31-1 pixels claimed by a 60-byte file: must be refused, not allocated.
 write("image/huge_dimensions.png", png(0x7FFFFFFF, 0x7FFFFFFF, b"\x00\x80\x40\x20"))
 write("image/zero_width.png", png(0, 4, b"\x00"))
+# A valid 2×2 grey image: fine as a texture, refused as a normal map (not RGB).
+write("image/grey_2x2.png", png(2, 2, b"\x00\x80\x80" * 2, colour_type=0))
 # OpenEXR: magic, version 2, then a header cut off inside the first attribute.
 write("image/truncated.exr", b"\x76\x2f\x31\x01" + struct.pack("<I", 2) + b"channels\x00chlist\x00" +
       struct.pack("<I", 37) + b"B\x00")

@@ -41,6 +41,11 @@ struct SurfaceInteraction {
     /// SurfaceInteraction), zero where the shape has no such map. Their cross product's length
     /// is the surface area one unit of uv covers, which sets a texture lookup's footprint.
     Vec3 dpdu, dpdv;
+    /// The tangent a normal map's +x (red) follows, interpolated from a mesh's vertex
+    /// tangents (geometry/tangent_space.h), and the sign that makes sign·(n × tangent) its +y;
+    /// zero where the shape has none (a normal map then takes ∂p/∂u and −∂p/∂v).
+    Vec3 tangent;
+    float tangent_sign = 1.0f;
     /// How fast the normal turns along the surface (1/radius: 1/r on a sphere, 0 on a plane),
     /// an isotropic estimate; it widens a ray cone reflected or refracted here.
     float curvature = 0.0f;

@@ -3,6 +3,7 @@
 
 #include "glint/accel/triangle_bvh.h"
 #include "glint/geometry/shape.h"
+#include "glint/geometry/tangent_space.h"
 #include "glint/materials/texture.h"
 #include "glint/math/vec2.h"
 #include "glint/sampling/discrete_distribution.h"
@@ -26,6 +27,9 @@ struct MeshData {
     std::vector<Color> colors;
     /// Per-vertex scene material indices, blended with barycentrics at a hit (handout §6.1.1).
     std::vector<uint32_t> vertex_materials;
+    /// Per-vertex tangent frames for normal maps (geometry/tangent_space.h); a mesh with
+    /// normals and texture coordinates computes them when none are given.
+    std::vector<Tangent> tangents;
 };
 
 /// Fill `data.normals` with smooth vertex normals: at each vertex, the sum of the unnormalised

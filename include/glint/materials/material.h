@@ -49,6 +49,11 @@ struct Material {
     /// `emission_lights` is off (then it is only seen by rays that hit it).
     Color emission{0.0f};
     const Texture* emission_texture = nullptr;
+    /// A tangent-space normal map (linear RGB: n = 2·rgb − 1, +x along the tangent, +y "up" in
+    /// the image, +z along the surface normal; materials/normal_map.h) bending the shading
+    /// normal; null for none. `normal_scale` scales its x and y (glTF's normalTexture.scale).
+    const Texture* normal_texture = nullptr;
+    float normal_scale = 1.0f;
     /// Cut-out mask: hits where texture alpha < alpha_cutoff are skipped, shadow rays too.
     const Texture* alpha_texture = nullptr;
     float alpha_cutoff = 0.5f;

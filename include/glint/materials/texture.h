@@ -35,6 +35,8 @@ public:
     [[nodiscard]] Color evaluate(const Vec2& uv, const Vec3& p) const { return evaluate(TextureQuery{uv, p, 0.0f}); }
     /// Coverage in [0, 1] (alpha masks); 1 where the texture has no alpha.
     [[nodiscard]] virtual float alpha(const Vec2& /*uv*/) const { return 1.0f; }
+    /// The channels the texture holds: an image's own count, 3 for colours made up.
+    [[nodiscard]] virtual int channel_count() const { return 3; }
     [[nodiscard]] virtual std::string_view type_name() const = 0;
     /// True for a view of another texture the scene holds (the same image at transformed
     /// coordinates): Scene::texture_count() counts what a scene declares, not its views.
@@ -56,6 +58,7 @@ public:
     [[nodiscard]] Color evaluate(const TextureQuery& q) const override;
     [[nodiscard]] float alpha(const Vec2& uv) const override;
     [[nodiscard]] std::string_view type_name() const override { return "image"; }
+    [[nodiscard]] int channel_count() const override { return image_->channels; }
     [[nodiscard]] const Image& image() const { return *image_; }
 
 private:

@@ -53,6 +53,7 @@ public:
     }
     [[nodiscard]] float alpha(const Vec2& uv) const override { return base_->alpha(map_(uv)); }
     [[nodiscard]] std::string_view type_name() const override { return base_->type_name(); }
+    [[nodiscard]] int channel_count() const override { return base_->channel_count(); }
     /// A view of the texture it maps, not a texture of its own (not counted by `glint info`).
     [[nodiscard]] bool is_view() const override { return true; }
     /// The map applied to lookup coordinates.
