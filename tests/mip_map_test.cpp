@@ -125,6 +125,14 @@ TEST(FilteredChecker, EqualsTheAverageOfPointSamplesOverTheBox) {
     }
 }
 
+TEST(FilteredChecker, AnUnboundedFootprintGivesTheMeanColourNotNaN) {
+    // A footprint can overflow (a huge uv_scale times a wide cone): the whole texture is then
+    // under it, so its mean, never NaN.
+    const CheckerTexture checks(Color(0.9f), Color(0.1f), 3.0f);
+    const Color c = checks.evaluate(TextureQuery{Vec2(0.3f, 0.2f), Vec3(), std::numeric_limits<float>::infinity()});
+    EXPECT_FLOAT_EQ(c.r, 0.5f);
+}
+
 TEST(FilteredChecker, APointLookupIsTheSquareItFallsIn) {
     const CheckerTexture checks(Color(0.9f), Color(0.1f), 2.0f);
     EXPECT_EQ(checks.evaluate(Vec2(0.1f, 0.1f), Vec3()).r, 0.9f);   // square (0, 0)

@@ -36,9 +36,11 @@ double square_wave_integral(double x) {
     return phase < 1.0 ? phase : 2.0 - phase;
 }
 
-/// The mean of that square wave over [x − w/2, x + w/2]; the wave itself at w = 0.
+/// The mean of that square wave over [x − w/2, x + w/2]; the wave itself at w = 0, its mean
+/// 0 over an unbounded box (a footprint that overflowed: infinity minus infinity is no number).
 double box_filtered_square_wave(double x, double w) {
     if (!(w > 1e-6)) return std::fmod(std::floor(x), 2.0) == 0.0 ? 1.0 : -1.0;
+    if (!std::isfinite(w)) return 0.0;
     return (square_wave_integral(x + 0.5 * w) - square_wave_integral(x - 0.5 * w)) / w;
 }
 
