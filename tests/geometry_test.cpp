@@ -293,6 +293,48 @@ TEST(Heightfield, AgreesWithTriangleListOnRandomRays) {
     EXPECT_GT(hits, 1000);
 }
 
+TEST(Heightfield, RaysThroughSharedEdgesAndVerticesNeverSlipThrough) {
+    // Seen along a direction every triangle faces, the surface covers its extent without
+    // folds: every such ray aimed at a point strictly inside it must hit, also through the
+    // edges and vertices two to six triangles share (meshes' watertight test, Woop et al.
+    // 2013, guarantees it). (A ray that sees a triangle edge-on may rightly skim a ridge.)
+    const uint32_t nx = 9, nz = 7;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<float> h(nx * nz);
+    for (float& y : h) y = 0.25f * u(rng) - 0.1f;
+    const Vec2 lo(-1.3f, 0.7f), hi(2.9f, 3.1f);
+    const Heightfield field(nx, nz, h, lo, hi);
+    const MeshData grid = heightfield_as_mesh(nx, nz, h, lo, hi);
+    // The rim is no shared edge: targets stay strictly inside the outermost vertices.
+    const Vec3 first = grid.positions.front(), last = grid.positions.back();
+    std::vector<Vec3> targets;
+    for (std::size_t t = 0; t < grid.indices.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& a = grid.positions[grid.indices[t + k]];
+            const Vec3& b = grid.positions[grid.indices[t + (k + 1) % 3]];
+            for (const float s : {0.0f, 0.5f, 0.25f, 1.0f / 3.0f, 0.9f})
+                if (const Vec3 p = a + (b - a) * s; p.x > first.x && p.x < last.x && p.z > first.z && p.z < last.z)
+                    targets.push_back(p);
+        }
+    int escaped = 0, rays = 0;
+    for (const Vec3 offset : {Vec3(0.0f, 4.0f, 0.0f), Vec3(0.37f, 3.1f, -0.21f), Vec3(-1.0f, 2.9f, 0.6f)}) {
+        for (std::size_t t = 0; t < grid.indices.size(); t += 3) {
+            const Vec3 &a = grid.positions[grid.indices[t]], &b = grid.positions[grid.indices[t + 1]],
+                       &c = grid.positions[grid.indices[t + 2]];
+            ASSERT_GT(dot(cross(b - a, c - a), offset), 0.0f) << "triangle " << t / 3 << " does not face the rays";
+        }
+        for (const Vec3& target : targets) {
+            const Ray ray(target + offset, -offset);
+            Ray r = ray;
+            Hit hit;
+            ++rays;
+            if (!field.intersect(r, hit) || !field.occluded(ray)) ++escaped;
+        }
+    }
+    EXPECT_EQ(escaped, 0) << "of " << rays << " rays";
+}
+
 TEST(Heightfield, VerticalRayAndOutsideExtent) {
     const Heightfield field(2, 2, {1, 1, 1, 1}, Vec2(0, 0), Vec2(1, 1));
     Ray down({0.5f, 5, 0.5f}, {0, -1, 0});

@@ -43,19 +43,19 @@ Vec3 Heightfield::vertex_normal(uint32_t i, uint32_t j) const {
     return normalize(Vec3(-dydx, 1.0f, -dydz));
 }
 
-bool Heightfield::intersect_cell(uint32_t i, uint32_t j, Ray& ray, Hit& hit) const {
+bool Heightfield::intersect_cell(uint32_t i, uint32_t j, const WatertightRay& shear, Ray& ray, Hit& hit) const {
     // Cell (i, j) is split along its diagonal into (00, 01, 11) and (00, 11, 10), both
     // counter-clockwise seen from +y so that normals face up.
     const Vec3 v00 = vertex(i, j), v10 = vertex(i + 1, j), v01 = vertex(i, j + 1), v11 = vertex(i + 1, j + 1);
     const uint32_t cell = j * (nx_ - 1) + i;
     bool found = false;
     TriangleHit th;
-    if (intersect_triangle(ray, v00, v01, v11, th)) {
+    if (intersect_triangle_watertight(ray, shear, v00, v01, v11, th)) {
         ray.tmax = th.t;
         hit = Hit{th.t, hit.object, 2 * cell, th.v, th.w};
         found = true;
     }
-    if (intersect_triangle(ray, v00, v11, v10, th)) {
+    if (intersect_triangle_watertight(ray, shear, v00, v11, v10, th)) {
         ray.tmax = th.t;
         hit = Hit{th.t, hit.object, 2 * cell + 1, th.v, th.w};
         found = true;
@@ -73,6 +73,9 @@ bool Heightfield::traverse(Ray& ray, Hit& hit) const {
         return static_cast<int64_t>(std::clamp<int64_t>(c, 0, int64_t(cells) - 1));
     };
     const uint32_t cells_x = nx_ - 1, cells_z = nz_ - 1;
+    // Meshes' watertight test (Woop et al. 2013): the two triangles of a cell and those of
+    // its neighbours compute a shared edge's function identically, so no ray slips between.
+    const WatertightRay shear(ray.direction);
     int64_t i = cell_index(start.x, min_.x, cell_size_.x, cells_x);
     int64_t j = cell_index(start.z, min_.y, cell_size_.y, cells_z);
     // 2D DDA in the xz plane: t of the next vertical grid line in x and in z.
@@ -87,7 +90,7 @@ bool Heightfield::traverse(Ray& ray, Hit& hit) const {
     for (;;) {
         // Triangles of a cell lie inside its prism, so the first cell with a hit holds
         // the closest hit.
-        if (intersect_cell(uint32_t(i), uint32_t(j), ray, hit)) return true;
+        if (intersect_cell(uint32_t(i), uint32_t(j), shear, ray, hit)) return true;
         const float t_next = std::min(t_max_x, t_max_z);
         if (t_next > t_exit || t_next > ray.tmax) return false;
         if (t_max_x < t_max_z) {

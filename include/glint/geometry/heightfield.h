@@ -2,6 +2,7 @@
 /// \file Heightfield: a regular grid of heights, traversed cell by cell.
 
 #include "glint/geometry/shape.h"
+#include "glint/geometry/triangle.h"
 #include "glint/math/vec2.h"
 
 #include <vector>
@@ -11,7 +12,8 @@ namespace glint {
 /// Heights y(i, j) over a regular nx × nz grid of vertices spanning [x0, x1] × [z0, z1]
 /// (the handout's water surface). Each cell is split into two triangles. Rays walk the
 /// cells they cross in 2D (Amanatides & Woo 1987, "A Fast Voxel Traversal Algorithm")
-/// and stop at the first cell that yields a hit, so a query costs O(cells crossed).
+/// and stop at the first cell that yields a hit, so a query costs O(cells crossed); each
+/// cell's triangles get meshes' watertight test, so no ray slips through a shared edge.
 /// Normals are interpolated from central differences; uv = position within the extent.
 class Heightfield final : public Shape {
 public:
@@ -36,7 +38,7 @@ public:
 private:
     /// Closest hit: the first cell along the ray that yields one (also serves any-hit).
     bool traverse(Ray& ray, Hit& hit) const;
-    bool intersect_cell(uint32_t i, uint32_t j, Ray& ray, Hit& hit) const;
+    bool intersect_cell(uint32_t i, uint32_t j, const WatertightRay& shear, Ray& ray, Hit& hit) const;
     [[nodiscard]] Vec3 vertex(uint32_t i, uint32_t j) const;
     [[nodiscard]] Vec3 vertex_normal(uint32_t i, uint32_t j) const;
 
