@@ -92,7 +92,7 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
 void add_scene_options(CLI::App* cmd, SceneOptions& opt) {
     cmd->add_option("--camera", opt.camera, "glTF camera to render through: name or index (default: the first)");
     cmd->add_option("--up", opt.up,
-                    "Up axis of a mesh or glTF file's automatic camera: x, y (default) or z (scans, CAD)")
+                    "Up axis of a mesh or glTF file's automatic camera: x, y or z (scans, CAD); default: the axis an FBX file declares, else y")
         ->check(CLI::IsMember({"x", "y", "z"}));
     cmd->add_option("--aperture", opt.aperture,
                     "Lens aperture radius in world units: depth of field (0 = pinhole, the default)");

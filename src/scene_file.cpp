@@ -35,7 +35,7 @@ SceneFile load_scene_file(const std::filesystem::path& path, const SceneFileOpti
             throw SceneError(path.string() + ": an up axis was given (--up), but a TOML scene places its own camera");
         file.loaded = load_toml_scene(path);
     } else if (std::find(kMeshExtensions.begin(), kMeshExtensions.end(), ext) != kMeshExtensions.end()) {
-        file.loaded = load_mesh_scene(path, options.up.value_or(UpAxis::Y));
+        file.loaded = load_mesh_scene(path, options.up);
         file.default_lighting = true;
     } else {
         throw SceneError(path.string() + ": unknown scene format '" + ext +

@@ -18,6 +18,7 @@ glint::MeshFile sample_file() {
     data.indices = {0, 1, 2, 0, 2, 3};
     data.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {1, 0, 0}};
     data.uvs = {{0, 0}, {1, 0}, {0, 1}, {0.5f, 0.5f}};
+    data.tangents = {{{1, 0, 0}, 1.0f}, {{1, 0, 0}, 1.0f}, {{1, 0, 0}, 1.0f}, {{0, 1, 0}, -1.0f}};
     file.meshes.push_back(std::make_shared<glint::TriangleMesh>(data, "Cube"));
     file.meshes.push_back(nullptr);
     file.mesh_materials = {1, 0};
@@ -39,6 +40,10 @@ glint::MeshFile sample_file() {
     auto image = std::make_shared<glint::Image>(2, 1, 3);
     image->pixels = {1, 2, 3, 4, 5, 6};
     file.material_images = {nullptr, image};
+    auto normals = std::make_shared<glint::Image>(1, 1, 3);
+    normals->pixels = {0.5f, 0.5f, 1.0f};
+    file.material_normal_images = {normals, nullptr};
+    file.declared_up = glint::UpAxis::Z;
     file.warnings = {"model.obj: dropped 1 triangle"};
     file.skinned_meshes = {"Arm"};
     file.morphed_meshes = {"Face", "Brow"};
@@ -69,6 +74,9 @@ TEST(MeshFileBytes, EverythingComesBackAsItWas) {
     EXPECT_EQ(data.positions[3].z, 1.0f);
     EXPECT_EQ(data.normals[3].x, 1.0f);
     EXPECT_EQ(data.uvs[3].y, 0.5f);
+    ASSERT_EQ(data.tangents.size(), 4u);
+    EXPECT_EQ(data.tangents[3].direction.y, 1.0f);
+    EXPECT_EQ(data.tangents[3].sign, -1.0f);
     EXPECT_EQ(back.mesh_materials, (std::vector<uint32_t>{1, 0}));
     ASSERT_EQ(back.placements.size(), 1u);
     EXPECT_EQ(back.placements[0].node, "Node.001");
@@ -90,6 +98,11 @@ TEST(MeshFileBytes, EverythingComesBackAsItWas) {
     ASSERT_NE(back.material_images[1], nullptr);
     EXPECT_EQ(back.material_images[1]->width, 2);
     EXPECT_EQ(back.material_images[1]->pixels, (std::vector<float>{1, 2, 3, 4, 5, 6}));
+    ASSERT_EQ(back.material_normal_images.size(), 2u);
+    ASSERT_NE(back.material_normal_images[0], nullptr);
+    EXPECT_EQ(back.material_normal_images[0]->pixels, (std::vector<float>{0.5f, 0.5f, 1.0f}));
+    EXPECT_EQ(back.material_normal_images[1], nullptr);
+    EXPECT_EQ(back.declared_up, glint::UpAxis::Z);
     EXPECT_EQ(back.warnings, sample_file().warnings);
     EXPECT_EQ(back.skinned_meshes, sample_file().skinned_meshes);
     EXPECT_EQ(back.morphed_meshes, sample_file().morphed_meshes);

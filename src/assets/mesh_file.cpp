@@ -12,6 +12,8 @@
 #include "glint/util/file_extension.h"
 
 #include <assimp/material.h>
+#include <assimp/metadata.h>
+#include <assimp/ObjMaterial.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -21,6 +23,8 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <initializer_list>
+#include <optional>
 #include <set>
 
 namespace glint {
@@ -61,6 +65,33 @@ std::string mesh_name(const aiMesh* mesh, unsigned index) {
     return mesh->mName.length > 0 ? std::string(mesh->mName.C_Str()) : "mesh" + std::to_string(index);
 }
 
+/// The tangent frames a file stores (glTF's TANGENT, FBX's tangents and binormals), in
+/// Glint's convention (geometry/tangent_space.h): the tangent made perpendicular to the
+/// normal, and the sign that turns normal × tangent into the stored bitangent, the
+/// direction "up" in the image (assimp's glTF reader stores normal × tangent · w, so the
+/// sign is glTF's w). Empty, so that the mesh computes its own, when one is unusable:
+/// non-finite, or parallel to its normal.
+std::vector<Tangent> file_tangents(const aiMesh* mesh) {
+    std::vector<Tangent> tangents(mesh->mNumVertices);
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+        const Vec3 stored_normal(mesh->mNormals[v].x, mesh->mNormals[v].y, mesh->mNormals[v].z);
+        const Vec3 t(mesh->mTangents[v].x, mesh->mTangents[v].y, mesh->mTangents[v].z);
+        const float normal_length = std::sqrt(dot(stored_normal, stored_normal));
+        if (!is_finite(stored_normal) || !is_finite(t) || !(normal_length > 0.0f)) return {};
+        const Vec3 n = stored_normal / normal_length;
+        const Vec3 along = t - n * dot(n, t);
+        const float length = std::sqrt(dot(along, along));
+        if (!(length > 1e-6f)) return {};
+        float sign = 1.0f;
+        if (mesh->mBitangents) {
+            const Vec3 b(mesh->mBitangents[v].x, mesh->mBitangents[v].y, mesh->mBitangents[v].z);
+            if (dot(cross(n, t), b) < 0.0f) sign = -1.0f;
+        }
+        tangents[v] = {along / length, sign};
+    }
+    return tangents;
+}
+
 /// MeshData of assimp mesh `index` of `path`. A triangle that indexes past the vertices or
 /// touches a non-finite vertex is dropped and counted (Lenient) or refuses the file (Strict).
 MeshData convert_mesh(const aiMesh* mesh, unsigned index, const std::filesystem::path& path, Conversion& conversion) {
@@ -83,6 +114,7 @@ MeshData convert_mesh(const aiMesh* mesh, unsigned index, const std::filesystem:
             data.normals[v] = is_finite(nv) ? nv : Vec3(0.0f);
         }
     }
+    if (mesh->mTangents && mesh->mNormals && mesh->mTextureCoords[0]) data.tangents = file_tangents(mesh);
     if (mesh->mTextureCoords[0]) {
         data.uvs.resize(n);
         for (unsigned v = 0; v < n; ++v) {
@@ -135,34 +167,56 @@ MeshData convert_mesh(const aiMesh* mesh, unsigned index, const std::filesystem:
     return data;
 }
 
-std::shared_ptr<const Image> material_image(const aiScene* ai, const aiMaterial* mat, const std::filesystem::path& path,
-                                            std::vector<std::string>& warnings) {
+/// The first texture of the first of `types` that `mat` has, decoded (embedded or beside
+/// the file); null when it has none or it cannot be read (a warning says which and why).
+std::shared_ptr<const Image> material_image(const aiScene* ai, const aiMaterial* mat,
+                                            std::initializer_list<aiTextureType> types, ColorEncoding encoding,
+                                            const std::filesystem::path& path, std::vector<std::string>& warnings) {
     aiString texture_path;
-    if (mat->GetTexture(aiTextureType_DIFFUSE, 0, &texture_path) != AI_SUCCESS &&
-        mat->GetTexture(aiTextureType_BASE_COLOR, 0, &texture_path) != AI_SUCCESS)
-        return nullptr;
+    const auto found = std::find_if(types.begin(), types.end(), [&](aiTextureType type) {
+        return mat->GetTexture(type, 0, &texture_path) == AI_SUCCESS;
+    });
+    if (found == types.end()) return nullptr;
     const std::string name = texture_path.C_Str();
     try {
         if (const aiTexture* embedded = ai->GetEmbeddedTexture(name.c_str())) {
             if (embedded->mHeight == 0) {
                 const auto* bytes = reinterpret_cast<const unsigned char*>(embedded->pcData);
-                return std::make_shared<const Image>(decode_image({bytes, bytes + embedded->mWidth},
-                                                                  "embedded." + std::string(embedded->achFormatHint)));
+                return std::make_shared<const Image>(decode_image(
+                    {bytes, bytes + embedded->mWidth}, "embedded." + std::string(embedded->achFormatHint), encoding));
             }
+            const bool srgb = encoding == ColorEncoding::Color;
+            auto value = [srgb](unsigned char byte) { return srgb ? srgb_to_linear(byte / 255.0f) : byte / 255.0f; };
             Image img(int(embedded->mWidth), int(embedded->mHeight), 4);
             for (std::size_t i = 0; i < std::size_t(embedded->mWidth) * embedded->mHeight; ++i) {
                 const aiTexel& t = embedded->pcData[i];
-                const float rgba[4] = {srgb_to_linear(t.r / 255.0f), srgb_to_linear(t.g / 255.0f),
-                                       srgb_to_linear(t.b / 255.0f), t.a / 255.0f};
+                const float rgba[4] = {value(t.r), value(t.g), value(t.b), t.a / 255.0f};
                 std::copy(rgba, rgba + 4, img.pixels.begin() + std::ptrdiff_t(i * 4));
             }
             return std::make_shared<const Image>(std::move(img));
         }
-        return std::make_shared<const Image>(read_image(path.parent_path() / name));
+        return std::make_shared<const Image>(read_image(path.parent_path() / name, encoding));
     } catch (const std::exception& e) {
         warnings.push_back(path.string() + ": material '" + mat->GetName().C_Str() + "': texture ignored: " + e.what());
         return nullptr;
     }
+}
+
+/// The material's tangent-space normal map. OBJ's `map_Bump`/`bump` (assimp's HEIGHT) is read
+/// as a normal map, as Blender's OBJ importer and exporter do; a one- or two-channel image
+/// there is a height map, which Glint does not bump with: ignored, with a warning.
+std::shared_ptr<const Image> material_normal_image(const aiScene* ai, const aiMaterial* mat,
+                                                   const std::filesystem::path& path,
+                                                   std::vector<std::string>& warnings) {
+    std::shared_ptr<const Image> image = material_image(ai, mat, {aiTextureType_NORMALS, aiTextureType_HEIGHT},
+                                                        ColorEncoding::Data, path, warnings);
+    if (image && image->channels < 3) {
+        warnings.push_back(path.string() + ": material '" + mat->GetName().C_Str() + "': normal map ignored: it has " +
+                           std::to_string(image->channels) +
+                           " channel(s), a height map (expected RGB, a tangent-space normal map)");
+        return nullptr;
+    }
+    return image;
 }
 
 /// OBJ/MTL, FBX, PLY... material as assimp describes it, in the Whitted model's terms.
@@ -179,6 +233,13 @@ Material convert_assimp_material(const aiMaterial* mat, unsigned index) {
     float reflectivity = 0.0f;
     if (mat->Get(AI_MATKEY_REFLECTIVITY, reflectivity) == AI_SUCCESS && reflectivity > 0.0f)
         m.reflectivity = Color(std::min(reflectivity, 1.0f));
+    // OBJ's `-bm` on `norm` or `map_Bump`: the normal map's strength (Blender's Normal Map
+    // node), which Glint applies as glTF's normalTexture.scale.
+    float bump_multiplier = 1.0f;
+    if ((mat->Get(AI_MATKEY_OBJ_BUMPMULT_NORMALS(0), bump_multiplier) == AI_SUCCESS ||
+         mat->Get(AI_MATKEY_OBJ_BUMPMULT_HEIGHT(0), bump_multiplier) == AI_SUCCESS) &&
+        std::isfinite(bump_multiplier))
+        m.normal_scale = bump_multiplier;
     float opacity = 1.0f;
     if (mat->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f) {
         m.transparency = std::clamp(1.0f - opacity, 0.0f, 1.0f);
@@ -207,6 +268,18 @@ std::vector<std::string> animation_warnings(const std::filesystem::path& path, c
 
 namespace {
 
+/// The up axis an FBX file's GlobalSettings declare (assimp's "UpAxis" 0/1/2 for x/y/z with
+/// "UpAxisSign" ±1), which Blender's FBX importer honours. None for a downward axis, which
+/// the framing camera does not take, and for formats that declare none (glTF is +y by
+/// definition; assimp turns a COLLADA file's up axis into +y itself).
+std::optional<UpAxis> declared_up_axis(const aiScene* ai) {
+    int32_t axis = -1, sign = 1;
+    if (!ai->mMetaData || !ai->mMetaData->Get("UpAxis", axis)) return std::nullopt;
+    ai->mMetaData->Get("UpAxisSign", sign);
+    if (sign < 0 || axis < 0 || axis > 2) return std::nullopt;
+    return axis == 0 ? UpAxis::X : axis == 1 ? UpAxis::Y : UpAxis::Z;
+}
+
 /// Glint meshes, placements and (optionally) materials of an assimp scene read from `path`.
 MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, Conversion conversion) {
     MeshFile file;
@@ -233,6 +306,7 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, Con
     if (empty > 0 && empty < ai->mNumMeshes)
         file.warnings.push_back(path.string() + ": " + std::to_string(empty) + " mesh(es) without triangles skipped");
     file.animations = ai->mNumAnimations;
+    file.declared_up = declared_up_axis(ai);
 
     std::set<std::vector<unsigned>> groups;
     std::function<void(const aiNode*, const Matrix4&)> visit = [&](const aiNode* node, const Matrix4& parent) {
@@ -252,7 +326,10 @@ MeshFile convert_scene(const aiScene* ai, const std::filesystem::path& path, Con
     if (conversion.materials) {
         for (unsigned i = 0; i < ai->mNumMaterials; ++i) {
             file.materials.push_back(convert_assimp_material(ai->mMaterials[i], i));
-            file.material_images.push_back(material_image(ai, ai->mMaterials[i], path, file.warnings));
+            file.material_images.push_back(material_image(ai, ai->mMaterials[i],
+                                                          {aiTextureType_DIFFUSE, aiTextureType_BASE_COLOR},
+                                                          ColorEncoding::Color, path, file.warnings));
+            file.material_normal_images.push_back(material_normal_image(ai, ai->mMaterials[i], path, file.warnings));
         }
     }
     return file;

@@ -6,9 +6,11 @@
 #include "glint/image/image.h"
 #include "glint/materials/material.h"
 #include "glint/math/transform.h"
+#include "glint/scene/asset_defaults.h"
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,11 @@ struct MeshFile {
     /// the decoded diffuse texture of each (null for none).
     std::vector<Material> materials;
     std::vector<std::shared_ptr<const Image>> material_images;
+    /// The tangent-space normal map of each material (null for none): OBJ's `norm` and
+    /// `map_Bump`/`bump` (read as a normal map, as Blender does), FBX's normal maps.
+    std::vector<std::shared_ptr<const Image>> material_normal_images;
+    /// The up axis the file declares (FBX's GlobalSettings UpAxis, +y/+z/+x), if any.
+    std::optional<UpAxis> declared_up;
     /// Problems worked around (dropped triangles, missing textures), one line each.
     std::vector<std::string> warnings;
     /// What the file animates, which Glint draws at rest: names of skinned meshes and of

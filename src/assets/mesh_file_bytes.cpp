@@ -69,6 +69,41 @@ std::vector<std::string> read_names(ByteReader& r) {
     return names;
 }
 
+void write_images(ByteWriter& w, const std::vector<std::shared_ptr<const Image>>& images) {
+    w.value(uint64_t(images.size()));
+    for (const std::shared_ptr<const Image>& image : images) {
+        w.value(uint8_t(image != nullptr));
+        if (!image) continue;
+        w.value(image->width);
+        w.value(image->height);
+        w.value(image->channels);
+        w.array(image->pixels);
+    }
+}
+
+/// Throws ByteStreamError (or std::invalid_argument for an image whose size does not match
+/// its pixels).
+std::vector<std::shared_ptr<const Image>> read_images(ByteReader& r) {
+    std::vector<std::shared_ptr<const Image>> images;
+    for (uint64_t i = 0, n = r.value<uint64_t>(); i < n; ++i) {
+        if (r.value<uint8_t>() == 0) {
+            images.push_back(nullptr);
+            continue;
+        }
+        auto image = std::make_shared<Image>();
+        image->width = r.value<int>();
+        image->height = r.value<int>();
+        image->channels = r.value<int>();
+        image->pixels = r.array<float>();
+        if (image->width <= 0 || image->height <= 0 || image->channels <= 0 ||
+            image->pixels.size() !=
+                std::size_t(image->width) * std::size_t(image->height) * std::size_t(image->channels))
+            throw std::invalid_argument("an image's size does not match its pixels");
+        images.push_back(std::move(image));
+    }
+    return images;
+}
+
 }  // namespace
 
 std::string to_bytes(const MeshFile& file) {
@@ -85,6 +120,7 @@ std::string to_bytes(const MeshFile& file) {
         w.array(data.uvs);
         w.array(data.colors);
         w.array(data.vertex_materials);
+        w.array(data.tangents);
     }
     w.array(file.mesh_materials);
     w.value(uint64_t(file.placements.size()));
@@ -96,15 +132,9 @@ std::string to_bytes(const MeshFile& file) {
     w.value(uint64_t(file.distinct_meshes));
     w.value(uint64_t(file.materials.size()));
     for (const Material& m : file.materials) write_material(w, m);
-    w.value(uint64_t(file.material_images.size()));
-    for (const std::shared_ptr<const Image>& image : file.material_images) {
-        w.value(uint8_t(image != nullptr));
-        if (!image) continue;
-        w.value(image->width);
-        w.value(image->height);
-        w.value(image->channels);
-        w.array(image->pixels);
-    }
+    write_images(w, file.material_images);
+    write_images(w, file.material_normal_images);
+    w.value(uint8_t(file.declared_up ? 1 + int(*file.declared_up) : 0));
     write_names(w, file.warnings);
     write_names(w, file.skinned_meshes);
     write_names(w, file.morphed_meshes);
@@ -133,6 +163,7 @@ MeshFile mesh_file_from_bytes(std::string_view bytes, const std::string& context
             data.uvs = r.array<Vec2>();
             data.colors = r.array<Color>();
             data.vertex_materials = r.array<uint32_t>();
+            data.tangents = r.array<Tangent>();
             file.meshes.push_back(std::make_shared<TriangleMesh>(std::move(data), std::move(name)));
         }
         file.mesh_materials = r.array<uint32_t>();
@@ -146,22 +177,14 @@ MeshFile mesh_file_from_bytes(std::string_view bytes, const std::string& context
         }
         file.distinct_meshes = std::size_t(r.value<uint64_t>());
         for (uint64_t i = 0, n = r.value<uint64_t>(); i < n; ++i) file.materials.push_back(read_material(r));
-        for (uint64_t i = 0, n = r.value<uint64_t>(); i < n; ++i) {
-            if (r.value<uint8_t>() == 0) {
-                file.material_images.push_back(nullptr);
-                continue;
-            }
-            auto image = std::make_shared<Image>();
-            image->width = r.value<int>();
-            image->height = r.value<int>();
-            image->channels = r.value<int>();
-            image->pixels = r.array<float>();
-            if (image->width <= 0 || image->height <= 0 || image->channels <= 0 ||
-                image->pixels.size() !=
-                    std::size_t(image->width) * std::size_t(image->height) * std::size_t(image->channels))
-                throw damaged("an image's size does not match its pixels");
-            file.material_images.push_back(std::move(image));
-        }
+        file.material_images = read_images(r);
+        file.material_normal_images = read_images(r);
+        if (file.material_images.size() != file.materials.size() ||
+            file.material_normal_images.size() != file.materials.size())
+            throw damaged("a material's images are missing");
+        const auto up = r.value<uint8_t>();
+        if (up > 3) throw damaged("an unknown up axis");
+        if (up > 0) file.declared_up = UpAxis(up - 1);
         file.warnings = read_names(r);
         file.skinned_meshes = read_names(r);
         file.morphed_meshes = read_names(r);

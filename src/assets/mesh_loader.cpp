@@ -77,6 +77,8 @@ std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, con
     for (std::size_t i = 0; i < file.materials.size(); ++i) {
         Material m = file.materials[i];
         if (file.material_images[i]) m.texture = scene.add_texture(std::make_unique<ImageTexture>(file.material_images[i]));
+        if (file.material_normal_images[i])
+            m.normal_texture = scene.add_texture(std::make_unique<ImageTexture>(file.material_normal_images[i]));
         result.push_back(scene.add_material(std::move(m)));
     }
     return result;
@@ -131,6 +133,7 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
         fresh->meshes.assign(meshes.begin(), meshes.end());
         entry = &files.insert(key, std::move(fresh));
     }
+    result.declared_up = entry->file.declared_up;
     if (!override_material && !entry->scene_materials)
         entry->scene_materials =
             add_file_materials(scene, entry->file, entry->is_gltf ? &document() : nullptr, meshes, notes);
@@ -149,14 +152,15 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     return result;
 }
 
-LoadedScene load_mesh_scene(const std::filesystem::path& path, UpAxis up) {
+LoadedScene load_mesh_scene(const std::filesystem::path& path, std::optional<UpAxis> up) {
     LoadedScene loaded;
     MeshCache cache;
     MeshImportResult result = import_mesh_file(loaded.scene, path, Transform(), std::nullopt, cache);
     loaded.warnings = std::move(result.warnings);
     loaded.settings.width = 640;
     loaded.settings.height = 480;
-    loaded.scene.camera = framing_camera(loaded.scene.world_bounds(), 640.0f / 480.0f, path, up);
+    loaded.scene.camera = framing_camera(loaded.scene.world_bounds(), 640.0f / 480.0f, path,
+                                         up.value_or(result.declared_up.value_or(UpAxis::Y)));
     add_default_lighting(loaded.scene);
     return loaded;
 }

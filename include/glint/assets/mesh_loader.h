@@ -30,6 +30,8 @@ struct MeshImportResult {
     /// True if the file was already loaded (through the cache) and only placed again.
     bool reused = false;
     std::vector<std::string> warnings;
+    /// The up axis the file declares (FBX), if any.
+    std::optional<UpAxis> declared_up;
 };
 
 class MeshCache;
@@ -71,7 +73,8 @@ private:
 };
 
 /// A bare mesh file (PLY, OBJ, STL, FBX...) as a scene: its meshes and materials, a framing
-/// camera and the default lighting, 640×480. Throws SceneError.
-[[nodiscard]] LoadedScene load_mesh_scene(const std::filesystem::path& path, UpAxis up = UpAxis::Y);
+/// camera and the default lighting, 640×480. The camera stands upright for `up`, else for
+/// the axis the file declares (FBX), else for +y. Throws SceneError.
+[[nodiscard]] LoadedScene load_mesh_scene(const std::filesystem::path& path, std::optional<UpAxis> up = std::nullopt);
 
 }  // namespace glint
