@@ -7,11 +7,15 @@
 
 #include "glint/assets/gltf_scene_loader.h"
 #include "glint/diagnostics.h"
+#include "glint/image/film.h"
+#include "glint/integrators/whitted_integrator.h"
 #include "glint/materials/material_at_hit.h"
+#include "glint/scene/render_scene.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -81,6 +85,66 @@ TEST(GltfTextureTransform, OffsetRotationAndScaleMoveTheTexelSeen) {
     expect_texel(seen(base_colour({{"offset", {0.5, 0.0}}}), uv), 2, "offset 0.5");
     expect_texel(seen(base_colour({{"scale", {3.0, 1.0}}}), uv), 1, "scale 3");
     expect_texel(seen(base_colour({{"rotation", std::numbers::pi}}), uv), 3, "rotation π");
+}
+
+namespace {
+
+/// The quad rendered whole by the Whitted integrator (the loader's framing camera and
+/// default light), 16×12, 1 sample per pixel.
+glint::Film render(glint::GltfScene file) {
+    const glint::RenderScene prepared(std::move(file.loaded.scene));
+    glint::RenderSettings settings;
+    settings.width = 16;
+    settings.height = 12;
+    glint::Film film(settings.width, settings.height);
+    glint::WhittedIntegrator(2).render(prepared, settings, film, {});
+    return film;
+}
+
+/// Σ |a − b| over pixels and channels.
+float difference(const glint::Film& a, const glint::Film& b) {
+    float sum = 0.0f;
+    for (uint32_t y = 0; y < a.height(); ++y)
+        for (uint32_t x = 0; x < a.width(); ++x) {
+            const Color d = a.at(x, y) - b.at(x, y);
+            sum += std::abs(d.r) + std::abs(d.g) + std::abs(d.b);
+        }
+    return sum;
+}
+
+/// base_colour(transform) with texture coordinates spanning [0, 1] once over the quad, so
+/// that the camera sees each texel over several pixels (the other tests' coordinates repeat
+/// the texture many times, which filtering rightly averages to one colour when rendered).
+glint::GltfScene magnified(const json& transform) {
+    const auto dir = glint_test::temp_dir();
+    glint_test::write_png(dir / "four.png", kTexels);
+    json j = glint_test::quad_json_with({{"pbrMetallicRoughness",
+                                          {{"baseColorFactor", {1, 1, 1, 1}},
+                                           {"metallicFactor", 0},
+                                           {"baseColorTexture", info(transform)}}}},
+                                        {"four.png"});
+    j["extensionsUsed"] = {"KHR_texture_transform"};
+    // u = (x + 10)/20 and v = (z + 10)/20 at the quad's corners (−10,·,−10), (−10,·,10),
+    // (10,·,10), (10,·,−10).
+    const float uvs[8] = {0, 0, 0, 1, 1, 1, 1, 0};
+    std::string bin = glint_test::quad_buffer();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", sizeof uvs}});
+    j["accessors"][2]["bufferView"] = j["bufferViews"].size() - 1;
+    bin.append(reinterpret_cast<const char*>(uvs), sizeof uvs);
+    j["buffers"][0] = {{"uri", "quad.bin"}, {"byteLength", bin.size()}};
+    glint_test::write_file(dir / "quad.bin", bin);
+    glint_test::write_file(dir / "quad.gltf", j.dump());
+    return glint::load_gltf_scene(dir / "quad.gltf");
+}
+
+}  // namespace
+
+TEST(GltfTextureTransform, TheRenderedQuadChangesWithTheTransformAndNotWithTheIdentity) {
+    const glint::Film plain = render(magnified(nullptr));
+    EXPECT_EQ(difference(render(magnified(json::object())), plain), 0.0f) << "the identity renders the same";
+    for (const json& transform : {json{{"offset", {0.5, 0.0}}}, json{{"scale", {3.0, 1.0}}},
+                                  json{{"rotation", std::numbers::pi / 2}}})
+        EXPECT_GT(difference(render(magnified(transform)), plain), 1.0f) << transform.dump();
 }
 
 TEST(GltfTextureTransform, IsMappedAndTheViewIsNotCountedAsATexture) {
