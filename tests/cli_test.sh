@@ -295,5 +295,13 @@ grep -q "not a Glint checkpoint" err.txt || fail "corrupt checkpoint message: $(
 if "$glint" render "${res[@]}" -o none.pfm --resume 2>err.txt; then fail "--resume without a checkpoint passed"; fi
 grep -q "no checkpoint to resume" err.txt || fail "missing checkpoint message: $(cat err.txt)"
 
+# Start-up: OpenImageIO (255 shared libraries, 200 ms; src/image/image_codec.h) is loaded only
+# by a run that reads or writes an image it needs for; PNG output goes through libpng.
+loads_oiio() { LD_DEBUG=libs "$glint" "$@" 2>&1 >/dev/null | grep -q "libOpenImageIO.so"; }
+loads_oiio --help && fail "glint --help loaded OpenImageIO"
+loads_oiio info "$scenes/spheres.toml" && fail "glint info loaded OpenImageIO"
+loads_oiio render -o start.png --width 1 --height 1 -q && fail "a render to PNG loaded OpenImageIO"
+loads_oiio render -o start.exr --width 1 --height 1 -q || fail "a render to EXR did not load OpenImageIO (is the check blind?)"
+
 echo "$(( failures == 0 ? 1 : 0 )) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -3,6 +3,7 @@
 // roughness), emission, alpha modes, double-sided.
 
 #include "gltf_test_files.h"
+#include "png_file.h"
 
 #include "glint/assets/gltf_scene_loader.h"
 #include "glint/geometry/triangle_mesh.h"
@@ -11,7 +12,6 @@
 
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
 
 namespace {
 
@@ -131,15 +131,7 @@ TEST(GltfMaterials, DefaultMaterialIsARoughWhiteMetal) {
 TEST(GltfMaterials, AlphaMaskCutsTheMeshAndBlendCastsNoShadow) {
     const auto dir = glint_test::temp_dir();
     // A 1×1 RGBA PNG with alpha 0, as a data URI: the cut-out removes the whole quad.
-    {
-        auto out = OIIO::ImageOutput::create((dir / "clear.png").string());
-        OIIO::ImageSpec spec(1, 1, 4, OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:UnassociatedAlpha", 1);
-        const unsigned char texel[4] = {255, 255, 255, 0};
-        ASSERT_TRUE(out && out->open((dir / "clear.png").string(), spec) &&
-                    out->write_image(OIIO::TypeDesc::UINT8, texel));
-        out->close();
-    }
+    glint_test::write_png8(dir / "clear.png", 1, 1, 4, {255, 255, 255, 0});
     const std::string transparent_png = "clear.png";
     json j = glint_test::quad_json("quad.bin");
     // Texture coordinates: any 4 VEC2s will do (the texture is uniform); reuse the positions' bytes.

@@ -3,10 +3,10 @@
 // coordinates and one-row PNG textures.
 
 #include "gltf_test_files.h"
+#include "png_file.h"
 
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
 
 #include <array>
 #include <filesystem>
@@ -21,11 +21,9 @@ using Texel = std::array<unsigned char, 3>;
 /// Write `texels` (left to right, one row) as an 8-bit RGB PNG; returns the file's bytes. The
 /// bytes go to the file as they are, with no colour conversion on the way.
 inline std::string write_png(const std::filesystem::path& path, const std::vector<Texel>& texels) {
-    auto out = OIIO::ImageOutput::create(path.string());
-    const OIIO::ImageSpec spec(int(texels.size()), 1, 3, OIIO::TypeDesc::UINT8);
-    EXPECT_TRUE(out && out->open(path.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, texels.data()));
-    if (out) out->close();
-    return read_file(path);
+    std::vector<unsigned char> samples;
+    for (const Texel& t : texels) samples.insert(samples.end(), t.begin(), t.end());
+    return write_png8(path, int(texels.size()), 1, 3, samples);
 }
 
 /// The test quad with `material` as its only material and one texture per file in `images`

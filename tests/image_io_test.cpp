@@ -1,5 +1,6 @@
 #include "glint/image/film.h"
 #include "glint/image/image_io.h"
+#include "glint/math/color.h"
 
 #include <gtest/gtest.h>
 
@@ -66,6 +67,28 @@ TEST_F(ImageIoTest, PngIsSrgbEncodedAndDecodedBack) {
     EXPECT_NEAR(raw.at(1, 0, 0), 1.0f, 1e-6f);
     const Image decoded = read_image(p);
     EXPECT_NEAR(decoded.at(0, 0, 1), 0.21404f, 0.005f);
+}
+
+TEST_F(ImageIoTest, PngKeepsChannelCountsAndRowOrderAndRoundsToTheNearestLevel) {
+    // Grey, grey + alpha and RGB; each value a distinct display level, rows from the top.
+    for (const int channels : {1, 2, 3}) {
+        Image img(3, 2, channels);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 3; ++x)
+                for (int c = 0; c < channels; ++c)
+                    img.at(x, y, c) = srgb_to_linear(float(40 * (y * 3 + x) + 7 * c + 3) / 255.0f);
+        const fs::path p = dir_ / ("grey" + std::to_string(channels) + ".png");
+        write_image(p, img);
+        const Image back = read_image(p, ColorEncoding::Data);
+        ASSERT_EQ(back.channels, channels);
+        ASSERT_EQ(back.width, 3);
+        ASSERT_EQ(back.height, 2);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 3; ++x)
+                for (int c = 0; c < channels; ++c)
+                    EXPECT_FLOAT_EQ(back.at(x, y, c) * 255.0f, float(40 * (y * 3 + x) + 7 * c + 3))
+                        << channels << " channel(s), pixel " << x << "," << y << " channel " << c;
+    }
 }
 
 TEST_F(ImageIoTest, ExposureScalesDisplayOutput) {

@@ -1,6 +1,7 @@
 // sRGB decoding: 8-bit colour images are decoded to linear, alpha and float images are not.
 
 #include "gltf_test_files.h"
+#include "png_file.h"
 
 #include "glint/image/image_io.h"
 #include "glint/assets/gltf_scene_loader.h"
@@ -8,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
 
 #include <filesystem>
 
@@ -23,15 +23,9 @@ TEST(Srgb, TransferFunctionKnownValues) {
     for (float v = 0.0f; v <= 1.0f; v += 0.01f) EXPECT_NEAR(glint::linear_to_srgb(glint::srgb_to_linear(v)), v, 1e-5f);
 }
 
-/// Write 8-bit RGBA pixels with OIIO directly (no Glint encoding, no alpha association).
+/// Write 8-bit RGBA pixels byte for byte (no Glint encoding, no alpha association).
 void write_rgba8(const std::filesystem::path& path, const std::vector<unsigned char>& rgba, int w, int h) {
-    auto out = OIIO::ImageOutput::create(path.string());
-    ASSERT_TRUE(out);
-    OIIO::ImageSpec spec(w, h, 4, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    ASSERT_TRUE(out->open(path.string(), spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, rgba.data()));
-    out->close();
+    glint_test::write_png8(path, w, h, 4, rgba);
 }
 
 TEST(Srgb, EightBitPngDecodesColourButNotAlpha) {

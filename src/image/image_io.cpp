@@ -1,13 +1,12 @@
 #include "glint/image/image_io.h"
 
+#include "image_codec.h"
 #include "png_chunks.h"
+#include "png_writer.h"
 
 #include "glint/math/color.h"
 #include "glint/util/file_extension.h"
 #include "glint/util/move_into_place.h"
-
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <array>
@@ -19,6 +18,8 @@
 #include <fstream>
 #include <string>
 #include <system_error>
+
+#include <unistd.h>
 
 namespace glint {
 
@@ -41,82 +42,38 @@ bool write_pfm(const std::filesystem::path& path, const Image& image, const std:
 constexpr std::array<const char*, 8> kOutputExtensions = {".exr", ".hdr",  ".pfm", ".png",
                                                           ".jpg", ".jpeg", ".tif", ".tiff"};
 
-}  // namespace
+/// The size check every read makes before allocating: a header may claim any size; refuse
+/// one beyond a fixed budget (a 58-byte .hdr claiming 100000×100000 gave only
+/// "std::bad_alloc"; OpenImageIO 2.4 asked for 12.8 GB of scratch to read one row of a BMP
+/// claiming 16711664×8, found by fuzz/fuzz_image). Fixed rather than the machine's memory,
+/// so that a file loads or fails the same everywhere.
+std::string check_size(int width, int height, int channels) {
+    const double values = double(width) * double(height) * double(channels);
+    if (width <= kMaxImageSide && height <= kMaxImageSide && values <= double(kMaxImageValues)) return "";
+    return "a " + std::to_string(width) + "×" + std::to_string(height) + " image with " + std::to_string(channels) +
+           " channels is too large (expected at most " + std::to_string(kMaxImageSide) + " pixels a side and " +
+           std::to_string(kMaxImageValues) + " values, a 16384×8192 RGBA image)";
+}
 
-namespace {
-
-/// Pixels of an opened image as linear floats. Integer files hold display-encoded colour
-/// unless they say otherwise; float files are linear. Alpha is coverage, never sRGB-encoded.
-Image read_pixels(OIIO::ImageInput& input, const std::string& name, ColorEncoding encoding) {
-    const OIIO::ImageSpec& spec = input.spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw ImageError(name + ": image has no pixels");
-    // A header may claim any size; refuse one beyond a fixed budget before allocating (a
-    // 58-byte .hdr claiming 100000×100000 gave only "std::bad_alloc"; OpenImageIO 2.4 asked
-    // for 12.8 GB of scratch to read one row of a BMP claiming 16711664×8, found by
-    // fuzz/fuzz_image). Fixed rather than the machine's memory, so that a file loads or
-    // fails the same everywhere.
-    const double values = double(spec.width) * double(spec.height) * double(spec.nchannels);
-    if (spec.width > kMaxImageSide || spec.height > kMaxImageSide || values > double(kMaxImageValues))
-        throw ImageError(name + ": a " + std::to_string(spec.width) + "×" + std::to_string(spec.height) +
-                         " image with " + std::to_string(spec.nchannels) + " channels is too large (expected at most " +
-                         std::to_string(kMaxImageSide) + " pixels a side and " + std::to_string(kMaxImageValues) +
-                         " values, a 16384×8192 RGBA image)");
-    Image image(spec.width, spec.height, spec.nchannels);
-    if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-        throw ImageError(name + ": cannot read image: " + input.geterror());
-    input.close();
-    image.channel_names.assign(spec.channelnames.begin(), spec.channelnames.end());
-
-    const bool integer_data =
-        !(spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
-          spec.format.basetype == OIIO::TypeDesc::DOUBLE);
-    const std::string color_space = spec.get_string_attribute("oiio:ColorSpace");
-    const bool linear_tagged = color_space == "Linear" || color_space == "linear";
-    if (encoding == ColorEncoding::Color && integer_data && !linear_tagged) {
+/// The decoded image as linear floats. Integer files hold display-encoded colour unless they
+/// say otherwise; float files are linear. Alpha is coverage, never sRGB-encoded.
+Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
+    Image image;
+    image.width = decoded.width;
+    image.height = decoded.height;
+    image.channels = decoded.channels;
+    image.pixels = std::move(decoded.pixels);
+    image.channel_names = std::move(decoded.channel_names);
+    if (encoding == ColorEncoding::Color && decoded.integer_data && !decoded.linear_tagged) {
         // Grey+alpha and RGBA files without an alpha tag keep their last channel as alpha.
-        int alpha = spec.alpha_channel;
-        if (alpha < 0 && (spec.nchannels == 2 || spec.nchannels == 4)) alpha = spec.nchannels - 1;
-        const auto stride = std::size_t(spec.nchannels);
+        int alpha = decoded.alpha_channel;
+        if (alpha < 0 && (image.channels == 2 || image.channels == 4)) alpha = image.channels - 1;
+        const auto stride = std::size_t(image.channels);
         for (std::size_t i = 0; i < image.pixels.size(); i += stride)
-            for (int c = 0; c < std::min(spec.nchannels, 3); ++c)
+            for (int c = 0; c < std::min(image.channels, 3); ++c)
                 if (c != alpha) image.pixels[i + c] = srgb_to_linear(image.pixels[i + c]);
     }
     return image;
-}
-
-/// Bytes in memory as OpenImageIO reads them, refusing offsets outside the bytes. OpenImageIO
-/// 2.4's IOMemReader takes any offset a reader asks for: a corrupt EXR's chunk table made
-/// OpenEXR read one byte before the buffer (a heap overflow found by fuzz/fuzz_image,
-/// regressions/fuzz_image/exr_chunk_offset_before_buffer). A derived class, not a sibling,
-/// so that readers that treat a "memreader" proxy as an IOMemReader still may.
-class BoundedMemoryReader final : public OIIO::Filesystem::IOMemReader {
-public:
-    using IOMemReader::IOMemReader;
-
-    bool seek(int64_t offset) override {
-        if (offset < 0 || offset > int64_t(m_buf.size())) return false;
-        m_pos = offset;
-        return true;
-    }
-    size_t read(void* out, size_t size) override {
-        const size_t n = pread(out, size, m_pos);
-        m_pos += int64_t(n);
-        return n;
-    }
-    size_t pread(void* out, size_t size, int64_t offset) override {
-        if (offset < 0 || offset >= int64_t(m_buf.size())) return 0;
-        const size_t n = std::min(size, size_t(int64_t(m_buf.size()) - offset));
-        std::memcpy(out, m_buf.data() + offset, n);
-        return n;
-    }
-};
-
-/// Straight (unassociated) alpha: colour textures with cut-outs must keep their colour at
-/// the edges, which OpenImageIO's default premultiplication would darken.
-OIIO::ImageSpec straight_alpha_config() {
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    return config;
 }
 
 }  // namespace
@@ -132,10 +89,10 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
             return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
         },
         path.string());
-    const OIIO::ImageSpec config = straight_alpha_config();
-    auto input = OIIO::ImageInput::open(path.string(), &config);
-    if (!input) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
-    return read_pixels(*input, path.string(), encoding);
+    codec::DecodedImage decoded;
+    if (const std::string error = codec::oiio().read_file(path.string(), check_size, decoded); !error.empty())
+        throw ImageError(path.string() + ": " + error);
+    return linear_image(std::move(decoded), encoding);
 }
 
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, ColorEncoding encoding) {
@@ -148,16 +105,11 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
             return true;
         },
         name);
-    // OpenImageIO picks the reader from the name's extension and falls back to sniffing the
-    // bytes. In 2.4 a reader opened with a config spec takes the proxy from the spec's
-    // "oiio:ioproxy" attribute (a pointer to the pointer), not only from the argument.
-    BoundedMemoryReader reader(bytes.data(), bytes.size());
-    OIIO::Filesystem::IOProxy* proxy = &reader;
-    OIIO::ImageSpec config = straight_alpha_config();
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    auto input = OIIO::ImageInput::open(name, &config, &reader);
-    if (!input) throw ImageError(name + ": cannot decode image: " + OIIO::geterror());
-    return read_pixels(*input, name, encoding);
+    codec::DecodedImage decoded;
+    if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
+        !error.empty())
+        throw ImageError(name + ": " + error);
+    return linear_image(std::move(decoded), encoding);
 }
 
 bool keeps_radiance(const std::filesystem::path& path) { return is_float_format(lower_case_extension(path)); }
@@ -225,26 +177,18 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
         std::vector<float> rgb(std::size_t(image.width) * image.height * 3);
         for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
             for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = data[p * channels + std::min(c, channels - 1)];
-        if (!write_pfm(tmp, image, rgb)) error = "write failed";
+        if (!write_pfm(tmp, image, rgb)) error = "cannot write image: write failed";
+    } else if (ext == ".png") {
+        error = write_png(tmp, image.width, image.height, channels, data.data());
     } else {
-        auto output = OIIO::ImageOutput::create(path.string());
-        if (!output) throw ImageError(path.string() + ": cannot create a writer: " + OIIO::geterror());
-        OIIO::ImageSpec spec(image.width, image.height, channels,
-                             keep_linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-        if (named) {
-            spec.channelnames = image.channel_names;
-            spec.alpha_channel = -1;  // no channel is coverage: a fourth one is a count or an AOV
-        }
-        spec.attribute("oiio:ColorSpace", keep_linear ? "Linear" : "sRGB");
-        spec.attribute("Software", "Glint");
-        if (!(output->open(tmp.string(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, data.data()) &&
-              output->close()))
-            error = output->geterror();
+        const codec::PixelsToWrite pixels{image.width, image.height, channels, data.data(), keep_linear,
+                                          named ? &image.channel_names : nullptr};
+        error = codec::oiio().write_file(path.string(), tmp.string(), pixels);
     }
     if (!error.empty()) {
         std::error_code ec;
         std::filesystem::remove(tmp, ec);
-        throw ImageError(path.string() + ": cannot write image: " + error);
+        throw ImageError(path.string() + ": " + error);
     }
     if (const std::string reason = move_into_place(tmp, path); !reason.empty())
         throw ImageError(path.string() + ": cannot move the finished image into place: " + reason);

@@ -1,0 +1,67 @@
+#pragma once
+/// \file The boundary between libglint and OpenImageIO. Internal to src/image.
+///
+/// Debian's OpenImageIO brings 255 shared libraries (OpenCV with GStreamer and FFmpeg,
+/// OpenVDB, DCMTK...), all bound at load time: linked into a program, they cost it 200 ms and
+/// 130 MB before main() (docs/performance.md, "Start-up"). So OpenImageIO lives in a module of
+/// its own, `libglint_oiio.so` (oiio_codec.cpp), which image_io.cpp loads the first time an
+/// image is read or written: `glint --help`, `glint info`, a scene file's error and every
+/// test that touches no image never pay for it.
+///
+/// The module hands out plain function pointers (no exceptions and no vtables cross the
+/// boundary); each returns "" on success and otherwise what went wrong, worded to follow
+/// "NAME: ".
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace glint::codec {
+
+/// An image as its file stores it, its values converted to floats (8-bit 255 → 1.0).
+struct DecodedImage {
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> pixels;
+    std::vector<std::string> channel_names;
+    /// Stored as integers (display-encoded colour unless tagged linear) rather than floats.
+    bool integer_data = false;
+    /// The file says its values are linear ("oiio:ColorSpace" Linear).
+    bool linear_tagged = false;
+    /// The channel the file marks as alpha (coverage), -1 for none.
+    int alpha_channel = -1;
+};
+
+/// Called with a header's size before any pixel is allocated or read: a message refuses the
+/// image (a header may claim any size), "" accepts it.
+using SizeCheck = std::function<std::string(int width, int height, int channels)>;
+
+/// Float pixels to write: `channels` per pixel, row by row from the top.
+struct PixelsToWrite {
+    int width = 0, height = 0, channels = 0;
+    const float* data = nullptr;
+    /// Store floats (EXR, HDR) rather than 8-bit integers (the values are then display values).
+    bool floats = false;
+    /// Channel names to store (EXR AOVs); null for R, G, B.
+    const std::vector<std::string>* channel_names = nullptr;
+};
+
+struct Functions {
+    /// Read the file at `path` (straight, unassociated alpha).
+    std::string (*read_file)(const std::string& path, const SizeCheck& check, DecodedImage& out);
+    /// Read `size` bytes in memory; `name`'s extension says which format to try first.
+    std::string (*read_memory)(const unsigned char* bytes, std::size_t size, const std::string& name,
+                               const SizeCheck& check, DecodedImage& out);
+    /// Write `pixels` to `file` in the format `format_name`'s extension names.
+    std::string (*write_file)(const std::string& format_name, const std::string& file, const PixelsToWrite& pixels);
+};
+
+/// The module's entry point, looked up by this name.
+inline constexpr const char* kEntryPoint = "glint_oiio_codec";
+using EntryPoint = const Functions* (*)();
+
+/// The module's functions, loaded on the first call. Throws ImageError when the module
+/// cannot be loaded.
+[[nodiscard]] const Functions& oiio();
+
+}  // namespace glint::codec
