@@ -27,23 +27,12 @@ using glint_test::write_file;
 /// a TANGENT of (+x, tangent_w) at every vertex.
 std::filesystem::path quad_with_tangents(const std::filesystem::path& dir, float tangent_w) {
     nlohmann::json json = glint_test::quad_json("quad.bin");
-    const float normals[12] = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
-    const float uvs[8] = {0, 0, 0, 1, 1, 1, 1, 0};
-    const float tangents[16] = {1, 0, 0, tangent_w, 1, 0, 0, tangent_w, 1, 0, 0, tangent_w, 1, 0, 0, tangent_w};
     std::string bin = glint_test::quad_buffer();
-    auto append = [&](const void* data, std::size_t bytes, const char* type, const char* attribute) {
-        json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}});
-        json["accessors"].push_back({{"bufferView", json["bufferViews"].size() - 1},
-                                     {"componentType", 5126},
-                                     {"count", 4},
-                                     {"type", type}});
-        json["meshes"][0]["primitives"][0]["attributes"][attribute] = json["accessors"].size() - 1;
-        bin.append(static_cast<const char*>(data), bytes);
-    };
-    append(normals, sizeof normals, "VEC3", "NORMAL");
-    append(uvs, sizeof uvs, "VEC2", "TEXCOORD_0");
-    if (tangent_w != 0.0f) append(tangents, sizeof tangents, "VEC4", "TANGENT");
-    json["buffers"][0]["byteLength"] = bin.size();
+    glint_test::add_quad_attribute(json, bin, "NORMAL", "VEC3", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0});
+    glint_test::add_quad_attribute(json, bin, "TEXCOORD_0", "VEC2", {0, 0, 0, 1, 1, 1, 1, 0});
+    const float w = tangent_w;
+    if (w != 0.0f)
+        glint_test::add_quad_attribute(json, bin, "TANGENT", "VEC4", {1, 0, 0, w, 1, 0, 0, w, 1, 0, 0, w, 1, 0, 0, w});
     const auto path = dir / (tangent_w < 0 ? "mirrored.glb" : tangent_w > 0 ? "tangents.glb" : "computed.glb");
     write_file(path, glint_test::make_glb(json, bin));
     return path;

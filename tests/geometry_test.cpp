@@ -121,7 +121,15 @@ TEST(Sphere, ReintersectFromOffsetOriginNeverHitsAgain) {
     EXPECT_EQ(hits, 1000);
 }
 
-// ---- Triangle (seminar's Cramer's rule) --------------------------------------------------
+// ---- Triangle (the watertight test every triangle goes through) --------------------------
+
+namespace {
+
+bool intersect_triangle(const Ray& ray, const Vec3& v0, const Vec3& v1, const Vec3& v2, TriangleHit& th) {
+    return intersect_triangle_watertight(ray, WatertightRay(ray.direction), v0, v1, v2, th);
+}
+
+}  // namespace
 
 TEST(Triangle, HitGivesTAndBarycentrics) {
     const Vec3 v0(0, 0, 0), v1(1, 0, 0), v2(0, 1, 0);

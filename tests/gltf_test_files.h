@@ -56,6 +56,20 @@ inline std::filesystem::path write_gltf(const std::filesystem::path& dir, const 
     return path;
 }
 
+/// Append `floats` (the quad's 4 vertices, each a `type`: "VEC2", "VEC3", "VEC4") to `bin`
+/// as a new buffer view and accessor, and make it the quad's `attribute` (replacing one it
+/// had); the buffer's byteLength follows. For files written with make_glb.
+inline void add_quad_attribute(nlohmann::json& json, std::string& bin, const std::string& attribute,
+                               const std::string& type, const std::vector<float>& floats) {
+    const std::size_t bytes = floats.size() * sizeof(float);
+    json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}});
+    json["accessors"].push_back(
+        {{"bufferView", json["bufferViews"].size() - 1}, {"componentType", 5126}, {"count", 4}, {"type", type}});
+    json["meshes"][0]["primitives"][0]["attributes"][attribute] = json["accessors"].size() - 1;
+    bin.append(reinterpret_cast<const char*>(floats.data()), bytes);
+    json["buffers"][0]["byteLength"] = bin.size();
+}
+
 /// Pack a .gltf's JSON and one buffer into GLB bytes.
 inline std::string make_glb(nlohmann::json json, const std::string& bin) {
     json["buffers"][0].erase("uri");

@@ -126,15 +126,10 @@ glint::GltfScene magnified(const json& transform) {
     j["extensionsUsed"] = {"KHR_texture_transform"};
     // u = (x + 10)/20 and v = (z + 10)/20 at the quad's corners (−10,·,−10), (−10,·,10),
     // (10,·,10), (10,·,−10).
-    const float uvs[8] = {0, 0, 0, 1, 1, 1, 1, 0};
     std::string bin = glint_test::quad_buffer();
-    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", sizeof uvs}});
-    j["accessors"][2]["bufferView"] = j["bufferViews"].size() - 1;
-    bin.append(reinterpret_cast<const char*>(uvs), sizeof uvs);
-    j["buffers"][0] = {{"uri", "quad.bin"}, {"byteLength", bin.size()}};
-    glint_test::write_file(dir / "quad.bin", bin);
-    glint_test::write_file(dir / "quad.gltf", j.dump());
-    return glint::load_gltf_scene(dir / "quad.gltf");
+    glint_test::add_quad_attribute(j, bin, "TEXCOORD_0", "VEC2", {0, 0, 0, 1, 1, 1, 1, 0});
+    glint_test::write_file(dir / "quad.glb", glint_test::make_glb(j, bin));
+    return glint::load_gltf_scene(dir / "quad.glb");
 }
 
 }  // namespace
