@@ -5,8 +5,8 @@
 #include "glint/geometry/triangle.h"
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/math/offset_ray.h"
-#include "glint/scene/scene.h"
 #include "glint/scene/render_scene.h"
+#include "glint/scene/scene.h"
 
 #include <gtest/gtest.h>
 
@@ -176,8 +176,8 @@ TEST(TriangleMesh, InterpolatesNormalsUvsAndMaterials) {
     EXPECT_NEAR(si.uv.x, 0.25f, 1e-6f);
     EXPECT_NEAR(si.uv.y, 0.5f, 1e-6f);
     EXPECT_NEAR(si.geometric_normal.z, 1.0f, 1e-6f);
-    const Vec3 expected = normalize(Vec3(0, 0, 1) * 0.25f + normalize(Vec3(1, 0, 1)) * 0.25f +
-                                    normalize(Vec3(0, 1, 1)) * 0.5f);
+    const Vec3 expected =
+        normalize(Vec3(0, 0, 1) * 0.25f + normalize(Vec3(1, 0, 1)) * 0.25f + normalize(Vec3(0, 1, 1)) * 0.5f);
     EXPECT_NEAR(dot(si.shading_normal, expected), 1.0f, 1e-5f);
     ASSERT_TRUE(si.blends_materials);
     EXPECT_EQ(si.materials[1], 4u);
@@ -262,7 +262,8 @@ MeshData heightfield_as_mesh(uint32_t nx, uint32_t nz, const std::vector<float>&
     MeshData d;
     const float dx = (hi.x - lo.x) / float(nx - 1), dz = (hi.y - lo.y) / float(nz - 1);
     for (uint32_t j = 0; j < nz; ++j)
-        for (uint32_t i = 0; i < nx; ++i) d.positions.emplace_back(lo.x + float(i) * dx, h[j * nx + i], lo.y + float(j) * dz);
+        for (uint32_t i = 0; i < nx; ++i)
+            d.positions.emplace_back(lo.x + float(i) * dx, h[j * nx + i], lo.y + float(j) * dz);
     for (uint32_t j = 0; j + 1 < nz; ++j)
         for (uint32_t i = 0; i + 1 < nx; ++i) {
             const uint32_t a = j * nx + i, b = a + 1, c = a + nx, e = c + 1;
@@ -385,6 +386,18 @@ TEST(Scene, TransformedInstancesShareOneShape) {
     EXPECT_NEAR(h.t, 9.0f, 1e-5f);
     EXPECT_EQ(h.object, 1u);
     EXPECT_EQ(prepared.statistics().unique_shapes, 1u);
+}
+
+// Rays reach objects through the top rows of their inverse transform, which holds only
+// for affine ones: a projective transform is refused where it is placed.
+TEST(Scene, ProjectiveTransformsAreRefused) {
+    Scene scene;
+    const uint32_t m = scene.add_material(Material{});
+    Matrix4 projective = Matrix4::identity();
+    projective.m[3][2] = 0.25f;
+    EXPECT_THROW(scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), m, Transform(projective)),
+                 std::invalid_argument);
+    EXPECT_TRUE(scene.objects().empty());
 }
 
 TEST(Scene, NonUniformScaleGivesEllipsoidNormals) {

@@ -5,9 +5,9 @@
 #include "cli_runner.h"
 #include "gltf_test_files.h"
 
-#include "glint/diagnostics.h"
 #include "glint/assets/gltf_scene_loader.h"
 #include "glint/assets/mesh_loader.h"
+#include "glint/diagnostics.h"
 
 #include <gtest/gtest.h>
 
@@ -60,7 +60,8 @@ TEST(GltfErrors, TruncatedSampleGlbFailsCleanlyInTheCli) {
     const fs::path dir = glint_test::temp_dir();
     const std::string bytes = glint_test::read_file(duck);
     glint_test::write_file(dir / "Duck.glb", bytes.substr(0, bytes.size() / 2));
-    const glint_test::CliResult r = run_cli("render " + (dir / "Duck.glb").string() + " -q -o " + (dir / "x.png").string(), dir);
+    const glint_test::CliResult r =
+        run_cli("render " + (dir / "Duck.glb").string() + " -q -o " + (dir / "x.png").string(), dir);
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("Duck.glb"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
@@ -97,7 +98,8 @@ TEST(GltfErrors, MissingTextureWarnsAndRenders) {
     const glint::GltfScene s = glint::load_gltf_scene(path);
     EXPECT_TRUE(has_warning(s.loaded.warnings, "quad.gltf", "gone.png"));
     EXPECT_EQ(s.loaded.scene.materials()[0].texture, nullptr);
-    const glint_test::CliResult r = run_cli("render " + path.string() + " --width 8 --height 6 -o " + (dir / "x.png").string(), dir);
+    const glint_test::CliResult r =
+        run_cli("render " + path.string() + " --width 8 --height 6 -o " + (dir / "x.png").string(), dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("gone.png"), std::string::npos) << r.err;
     EXPECT_TRUE(fs::exists(dir / "x.png"));
@@ -231,7 +233,8 @@ TEST(GltfErrors, OutOfRangeIndexValuesDropTheirTriangles) {
     std::memcpy(bin.data() + 48 + 5 * 4, &bad, 4);  // second triangle (0, 2, 77) uses vertex 77 of 4
     glint_test::write_file(dir / "quad.bin", bin);
     const std::string warning =
-        "quad.gltf: mesh 0 primitive 0: 1 out-of-range vertex index(es) (expected below 4); their triangles are dropped";
+        "quad.gltf: mesh 0 primitive 0: 1 out-of-range vertex index(es) (expected below 4); their triangles are "
+        "dropped";
 
     const glint::GltfScene s = glint::load_gltf_scene(path);
     EXPECT_EQ(s.report.triangles, 1u);
@@ -249,25 +252,41 @@ TEST(GltfErrors, OutOfRangeIndexValuesDropTheirTriangles) {
     EXPECT_EQ(mesh.data().indices, (std::vector<uint32_t>{0, 1, 2})) << "the good triangle is kept as it was";
 }
 
-// A node scaled to zero has no inverse for ray queries: its mesh is skipped with the same
-// warning whichever way the file comes in, and the other node still draws.
-TEST(GltfErrors, SingularNodesAreSkippedWithAWarning) {
+/// A quad file with a second node, `node`, that places the quad where rays cannot reach it:
+/// the node is skipped with `warning` (after the file name) whichever way the file comes
+/// in, and the first node still draws.
+void expect_node_skipped(const json& node, const std::string& warning) {
     const fs::path dir = glint_test::temp_dir();
     json j = glint_test::quad_json("quad.bin");
-    j["nodes"].push_back({{"name", "flattened"}, {"mesh", 0}, {"scale", {1, 0, 1}}});
+    j["nodes"].push_back(node);
     j["scenes"][0]["nodes"].push_back(1);
-    const fs::path path = glint_test::write_gltf(dir, "flat", j);
-    const std::string warning = "flat.gltf: ignored node with a singular transform (scale 0) (on 'flattened')";
+    const fs::path path = glint_test::write_gltf(dir, "node", j);
+    const std::string expected = "node.gltf: ignored node with " + warning;
 
     const glint::GltfScene s = glint::load_gltf_scene(path);
     EXPECT_EQ(s.report.objects, 1u);
-    EXPECT_TRUE(has_warning(s.loaded.warnings, warning, dir.string())) << testing::PrintToString(s.loaded.warnings);
+    EXPECT_TRUE(has_warning(s.loaded.warnings, expected, dir.string())) << testing::PrintToString(s.loaded.warnings);
 
     glint::Scene scene;
     glint::MeshCache cache;
     const auto result = glint::import_mesh_file(scene, path, glint::Transform(), std::nullopt, cache);
     EXPECT_EQ(result.objects, 1u);
-    EXPECT_TRUE(has_warning(result.warnings, warning, dir.string())) << testing::PrintToString(result.warnings);
+    EXPECT_TRUE(has_warning(result.warnings, expected, dir.string())) << testing::PrintToString(result.warnings);
+}
+
+// A node scaled to zero has no inverse for ray queries.
+TEST(GltfErrors, SingularNodesAreSkippedWithAWarning) {
+    expect_node_skipped({{"name", "flattened"}, {"mesh", 0}, {"scale", {1, 0, 1}}},
+                        "a singular transform (scale 0) (on 'flattened')");
+}
+
+// A node matrix whose last row is not 0, 0, 0, 1 (glTF requires an affine one) would map
+// rays projectively, which Glint's object transforms never do. Column-major: element 3 is
+// row 3, column 0.
+TEST(GltfErrors, ProjectiveNodesAreSkippedWithAWarning) {
+    expect_node_skipped(
+        {{"name", "projective"}, {"mesh", 0}, {"matrix", {1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}},
+        "a projective transform (last row not 0, 0, 0, 1) (on 'projective')");
 }
 
 TEST(GltfErrors, NoGeometryIsAnError) {
@@ -284,7 +303,8 @@ TEST(GltfErrors, ImportIntoASceneSharesTheChecks) {
     glint_test::write_file(dir / "cut.glb", glb.substr(0, glb.size() - 8));
     glint::Scene scene;
     glint::MeshCache cache;
-    EXPECT_THROW(glint::import_mesh_file(scene, dir / "cut.glb", glint::Transform(), std::nullopt, cache), glint::SceneError);
+    EXPECT_THROW(glint::import_mesh_file(scene, dir / "cut.glb", glint::Transform(), std::nullopt, cache),
+                 glint::SceneError);
     glint_test::write_file(dir / "good.glb", glb);
     const auto result = glint::import_mesh_file(scene, dir / "good.glb", glint::Transform(), std::nullopt, cache);
     EXPECT_EQ(result.triangles, 2u);

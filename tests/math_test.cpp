@@ -1,6 +1,7 @@
 #include "glint/math/bounds3.h"
 #include "glint/math/color.h"
 #include "glint/math/frame.h"
+#include "glint/math/matrix3x4.h"
 #include "glint/math/offset_ray.h"
 #include "glint/math/transform.h"
 
@@ -36,8 +37,8 @@ TEST(Transform, RotateIsCounterClockwiseAboutAxis) {
 }
 
 TEST(Transform, InverseUndoesComposite) {
-    const Transform t = Transform::translate({1, -2, 3}) * Transform::rotate(33.0f, {1, 1, 0}) *
-                        Transform::scale({2, 0.5f, 3});
+    const Transform t =
+        Transform::translate({1, -2, 3}) * Transform::rotate(33.0f, {1, 1, 0}) * Transform::scale({2, 0.5f, 3});
     const Vec3 p(0.3f, -1.2f, 4.0f);
     expect_near(t.inverse().point(t.point(p)), p, 1e-4f);
     expect_near((t * t.inverse()).point(p), p, 1e-4f);
@@ -78,6 +79,42 @@ TEST(Transform, HandednessSwapIsDetected) {
     EXPECT_FALSE(Transform::rotate(120.0f, {1, 2, 3}).swaps_handedness());
 }
 
+// The top level keeps each object's inverse as a Matrix3x4: a ray it moves into object
+// space must be the one Transform::ray gives, bit for bit (the images depend on it), for
+// any composition of steps a scene file can write.
+TEST(Matrix3x4, MovesRaysExactlyAsTheTransform) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+    for (int i = 0; i < 1000; ++i) {
+        const Transform t = Transform::translate({u(rng), u(rng), u(rng)}) *
+                            Transform::rotate(60.0f * u(rng), {u(rng), u(rng), u(rng) + 7.0f}) *
+                            Transform::scale({u(rng) + 3.5f, -u(rng) - 3.5f, 0.25f});
+        const Transform inv = t.inverse();
+        ASSERT_TRUE(inv.matrix().is_affine());
+        const Ray r({u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, 0.001f, 50.0f, 0.5f);
+        const Ray expected = inv.ray(r);
+        const Ray got = Matrix3x4::of(inv.matrix()).ray(r);
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(got.origin[k], expected.origin[k]) << "ray " << i;
+            ASSERT_EQ(got.direction[k], expected.direction[k]) << "ray " << i;
+        }
+        EXPECT_EQ(got.tmin, r.tmin);
+        EXPECT_EQ(got.tmax, r.tmax);
+        EXPECT_EQ(got.time, r.time);
+    }
+}
+
+TEST(Matrix4, AffineMeansTheLastRowIsExactly0001) {
+    EXPECT_TRUE(Matrix4::identity().is_affine());
+    EXPECT_TRUE((Transform::rotate(30.0f, {1, 1, 0}) * Transform::translate({1, 2, 3})).inverse_matrix().is_affine());
+    Matrix4 m = Matrix4::identity();
+    m.m[3][0] = 0.5f;
+    EXPECT_FALSE(m.is_affine());
+    m = Matrix4::identity();
+    m.m[3][3] = 2.0f;
+    EXPECT_FALSE(m.is_affine());
+}
+
 TEST(Bounds3, SlabTestHitMissAndInside) {
     const Bounds3 box({-1, -1, -1}, {1, 1, 1});
     float t0, t1;
@@ -87,7 +124,7 @@ TEST(Bounds3, SlabTestHitMissAndInside) {
     EXPECT_FLOAT_EQ(t0, 4.0f);
     EXPECT_FLOAT_EQ(t1, 6.0f);
     EXPECT_FALSE(box.intersect({-5, 2, 0}, inv, 0.0f, kInfinity, t0, t1));
-    EXPECT_FALSE(box.intersect({-5, 0, 0}, inv, 0.0f, 3.0f, t0, t1));  // box beyond tmax
+    EXPECT_FALSE(box.intersect({-5, 0, 0}, inv, 0.0f, 3.0f, t0, t1));     // box beyond tmax
     ASSERT_TRUE(box.intersect({0, 0, 0}, inv, 0.0f, kInfinity, t0, t1));  // from inside
     EXPECT_FLOAT_EQ(t0, 0.0f);
     EXPECT_FLOAT_EQ(t1, 1.0f);

@@ -43,6 +43,16 @@ MeshCache::Entry& MeshCache::insert(const std::filesystem::path& path, std::uniq
     return *(entries_[path.string()] = std::move(entry));
 }
 
+const std::filesystem::path& MeshCache::canonical(const std::filesystem::path& path) {
+    auto [it, inserted] = canonical_paths_.try_emplace(path.string());
+    if (inserted) {
+        std::error_code ec;
+        const auto resolved = std::filesystem::weakly_canonical(path, ec);
+        it->second = ec ? path.lexically_normal() : resolved;
+    }
+    return it->second;
+}
+
 namespace {
 
 bool has_gltf_extension(const std::filesystem::path& path) {
@@ -50,18 +60,11 @@ bool has_gltf_extension(const std::filesystem::path& path) {
     return ext == ".gltf" || ext == ".glb";
 }
 
-std::filesystem::path canonical_key(const std::filesystem::path& path) {
-    std::error_code ec;
-    const auto canonical = std::filesystem::weakly_canonical(path, ec);
-    return ec ? path.lexically_normal() : canonical;
-}
-
 /// Convert `file`'s materials into `scene`; returns the scene material of each file material.
 /// A glTF file's materials come from its document `gltf` (null for other formats) and may
 /// put alpha masks on `meshes`.
 std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, const gltf::Document* gltf,
-                                         const std::vector<std::shared_ptr<TriangleMesh>>& meshes,
-                                         ImportNotes& notes) {
+                                         const std::vector<std::shared_ptr<TriangleMesh>>& meshes, ImportNotes& notes) {
     std::vector<uint32_t> result;
     if (gltf) {
         gltf::MaterialConverter converter(*gltf, scene, notes);
@@ -76,7 +79,8 @@ std::vector<uint32_t> add_file_materials(Scene& scene, const MeshFile& file, con
     }
     for (std::size_t i = 0; i < file.materials.size(); ++i) {
         Material m = file.materials[i];
-        if (file.material_images[i]) m.texture = scene.add_texture(std::make_unique<ImageTexture>(file.material_images[i]));
+        if (file.material_images[i])
+            m.texture = scene.add_texture(std::make_unique<ImageTexture>(file.material_images[i]));
         if (file.material_normal_images[i])
             m.normal_texture = scene.add_texture(std::make_unique<ImageTexture>(file.material_normal_images[i]));
         result.push_back(scene.add_material(std::move(m)));
@@ -105,7 +109,7 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
     if (override_material && *override_material >= scene.materials().size())
         throw SceneError(path.string() + ": override material " + std::to_string(*override_material) +
                          " does not exist (the scene has " + std::to_string(scene.materials().size()) + ")");
-    const std::filesystem::path key = canonical_key(path);
+    const std::filesystem::path key = files.canonical(path);
     MeshImportResult result;
     ImportNotes notes;
     MeshCache::Entry* entry = files.find(key);
@@ -144,9 +148,9 @@ MeshImportResult import_mesh_file(Scene& scene, const std::filesystem::path& pat
         const auto& table = *entry->scene_materials;
         return file_material < table.size() ? table[file_material] : table.empty() ? 0 : table.back();
     };
-    const PlacedMeshes placed =
-        place_meshes(scene, entry->file.placements, meshes, world_from_file, material, notes);
-    for (const std::string& line : notes.ignored_lines()) result.warnings.push_back(path.string() + ": ignored " + line);
+    const PlacedMeshes placed = place_meshes(scene, entry->file.placements, meshes, world_from_file, material, notes);
+    for (const std::string& line : notes.ignored_lines())
+        result.warnings.push_back(path.string() + ": ignored " + line);
     result.objects = placed.objects;
     result.triangles = placed.instanced_triangles;
     return result;

@@ -10,6 +10,11 @@ PlacedMeshes place_meshes(Scene& scene, const std::vector<MeshPlacement>& placem
     PlacedMeshes placed;
     for (const MeshPlacement& placement : placements) {
         placed.objects_by_placement.emplace_back();
+        // A projective node matrix places nothing meaningfully (and Glint's transforms are affine).
+        if (!placement.file_from_mesh.is_affine()) {
+            notes.ignored("node with a projective transform (last row not 0, 0, 0, 1)", placement.node);
+            continue;
+        }
         Transform file_from_mesh;
         try {
             file_from_mesh = Transform(placement.file_from_mesh);
@@ -26,7 +31,8 @@ PlacedMeshes place_meshes(Scene& scene, const std::vector<MeshPlacement>& placem
         // would poison the BVH build and every ray that reaches them (found by fuzz/fuzz_gltf).
         const Bounds3 world_bounds = world_from_mesh.bounds(mesh->bounds());
         if (!is_finite(world_bounds.lo) || !is_finite(world_bounds.hi)) {
-            notes.ignored("node placing its mesh beyond the range of float coordinates (a huge transform)", placement.node);
+            notes.ignored("node placing its mesh beyond the range of float coordinates (a huge transform)",
+                          placement.node);
             continue;
         }
         placed.objects_by_placement.back() =

@@ -24,7 +24,7 @@ RenderScene::RenderScene(Scene description) : scene_(std::move(description)) {
         HotObject& hot = objects_[i];
         hot.shape = o.shape.get();
         if (o.has_transform) {
-            hot.object_from_world = o.world_from_object.inverse();
+            hot.object_from_world = Matrix3x4::of(o.world_from_object.inverse_matrix());
             hot.transformed = true;
         }
         hot.dielectric = o.material < scene_.materials().size() && scene_.material(o.material).is_dielectric();

@@ -56,6 +56,9 @@ bool Scene::has_emitters() const {
 
 uint32_t Scene::add_object(std::shared_ptr<Shape> shape, uint32_t material,
                            const std::optional<Transform>& world_from_object, std::string name) {
+    // The render scene keeps only the top rows of the inverse (Matrix3x4).
+    if (world_from_object && !world_from_object->matrix().is_affine())
+        throw std::invalid_argument("an object's transform must be affine (last row 0, 0, 0, 1)");
     SceneObject object;
     object.shape = std::move(shape);
     object.material = material;

@@ -20,11 +20,14 @@ std::vector<std::string> keys_of(const Map& map) {
 
 std::filesystem::path BuildContext::input_file(const ParamTable& table, std::string_view key) const {
     const ParamValue& v = table.require(key, "a file name, relative to the scene file's folder");
-    const std::filesystem::path name = v.as_string(table.name_of(key));
+    const std::string& written = v.as_string(ValueName(table, key));
+    if (const auto it = found_files_.find(written); it != found_files_.end()) return it->second;
+    const std::filesystem::path name = written;
     const std::filesystem::path path = name.is_absolute() ? name : base_dir_ / name;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        v.fail(table.name_of(key), fmt::format("an existing file (looked for {})", path.string()));
+        v.fail(ValueName(table, key), fmt::format("an existing file (looked for {})", path.string()));
+    found_files_.emplace(written, path);
     return path;
 }
 
@@ -50,7 +53,7 @@ const Texture* BuildContext::texture(const ParamTable& table, std::string_view k
     v->fail(table.name_of(key), "the name of a texture in [[textures]]" + did_you_mean(name, keys_of(textures_)));
 }
 
-uint32_t BuildContext::material(const ParamValue& value, std::string_view what) const {
+uint32_t BuildContext::material(const ParamValue& value, const ValueName& what) const {
     const std::string& name = value.as_string(what);
     if (const auto index = scene_.find_material(name)) return *index;
     std::vector<std::string> names;

@@ -42,8 +42,8 @@ std::optional<std::vector<MotionKey>> read_motion_keys(const ParamTable& t) {
     if (!end) return std::nullopt;
     // pbrt's convention: the transforms hold at times 0 and 1; the shutter picks the times seen.
     Transform start;
-    if (const ParamValue* v = t.find("transform")) start = read_transform(*v, t.name_of("transform"));
-    return std::vector<MotionKey>{{0.0f, start}, {1.0f, read_transform(*end, t.name_of("transform_end"))}};
+    if (const ParamValue* v = t.find("transform")) start = read_transform(*v, ValueName(t, "transform"));
+    return std::vector<MotionKey>{{0.0f, start}, {1.0f, read_transform(*end, ValueName(t, "transform_end"))}};
 }
 
 }  // namespace glint

@@ -46,7 +46,7 @@ void import_file(const ParamTable& t, const std::optional<Transform>& transform,
     const auto first = uint32_t(context.scene().objects().size());
     const std::filesystem::path path = context.input_file(t, "file");
     std::optional<uint32_t> override_material;
-    if (const ParamValue* m = t.find("material")) override_material = context.material(*m, t.name_of("material"));
+    if (const ParamValue* m = t.find("material")) override_material = context.material(*m, ValueName(t, "material"));
     t.reject_unknown_keys();
     try {
         const MeshImportResult result = import_mesh_file(context.scene(), path, transform.value_or(Transform()),
@@ -88,11 +88,11 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
     if (keys)
         transform = keys->front().transform;
     else if (const ParamValue* v = t.find("transform"))
-        transform = read_transform(*v, t.name_of("transform"));
+        transform = read_transform(*v, ValueName(t, "transform"));
     std::shared_ptr<Shape> shape;
     if (const ParamValue* ref = t.find("shape")) {
         if (t.find("type")) t.fail("type", "no type for an object that places a named shape (shape = ...)");
-        const std::string& name = ref->as_string(t.name_of("shape"));
+        const std::string& name = ref->as_string(ValueName(t, "shape"));
         const auto it = library.find(name);
         if (it == library.end()) {
             std::vector<std::string> names;
@@ -110,7 +110,7 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
     const std::vector<uint32_t>* per_vertex = vertex_materials(*shape);
     const ParamValue* m = per_vertex ? t.find("material") : &t.require("material", "a material name");
     if (m && per_vertex) t.fail("material", "either one material or per-vertex materials, not both");
-    const uint32_t material = m ? context.material(*m, t.name_of("material")) : per_vertex->front();
+    const uint32_t material = m ? context.material(*m, ValueName(t, "material")) : per_vertex->front();
     if (context.scene().material(material).alpha_texture)
         shape = apply_cutout(t, std::move(shape), context.scene().material(material));
     const std::string name = t.string("name", "");

@@ -11,8 +11,6 @@ namespace glint {
 
 namespace {
 
-std::string element_name(std::string_view what, std::size_t index) { return fmt::format("{}[{}]", what, index); }
-
 std::string join(const std::vector<std::string>& words) {
     std::string out;
     for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
@@ -20,6 +18,11 @@ std::string join(const std::vector<std::string>& words) {
 }
 
 }  // namespace
+
+std::string ValueName::str() const {
+    if (array_) return fmt::format("{}[{}]", array_->str(), index_);
+    return table_ ? table_->name_of(text_) : std::string(text_);
+}
 
 bool ParamValue::is_number() const {
     return std::holds_alternative<int64_t>(data_) || std::holds_alternative<double>(data_);
@@ -40,11 +43,11 @@ std::string ParamValue::describe() const {
     return std::visit(Describe{}, data_);
 }
 
-void ParamValue::fail(std::string_view what, std::string_view expected) const {
-    throw_scene_error(where_, fmt::format("{} is {}; expected {}", what, describe(), expected));
+void ParamValue::fail(const ValueName& what, std::string_view expected) const {
+    throw_scene_error(where_, fmt::format("{} is {}; expected {}", what.str(), describe(), expected));
 }
 
-float ParamValue::as_float(std::string_view what) const {
+float ParamValue::as_float(const ValueName& what) const {
     double d = 0.0;
     if (const auto* i = std::get_if<int64_t>(&data_)) {
         d = double(*i);
@@ -58,45 +61,45 @@ float ParamValue::as_float(std::string_view what) const {
     return static_cast<float>(d);
 }
 
-int64_t ParamValue::as_integer(std::string_view what) const {
+int64_t ParamValue::as_integer(const ValueName& what) const {
     if (const auto* i = std::get_if<int64_t>(&data_)) return *i;
     fail(what, "an integer");
 }
 
-bool ParamValue::as_bool(std::string_view what) const {
+bool ParamValue::as_bool(const ValueName& what) const {
     if (const auto* b = std::get_if<bool>(&data_)) return *b;
     fail(what, "true or false");
 }
 
-const std::string& ParamValue::as_string(std::string_view what) const {
+const std::string& ParamValue::as_string(const ValueName& what) const {
     if (const auto* s = std::get_if<std::string>(&data_)) return *s;
     fail(what, "a string");
 }
 
-const ParamValue::Array& ParamValue::as_array(std::string_view what) const {
+const ParamValue::Array& ParamValue::as_array(const ValueName& what) const {
     if (const auto* a = std::get_if<Array>(&data_)) return *a;
     fail(what, "an array");
 }
 
-const ParamTable& ParamValue::as_table(std::string_view what) const {
+const ParamTable& ParamValue::as_table(const ValueName& what) const {
     if (const auto* t = std::get_if<std::shared_ptr<const ParamTable>>(&data_)) return **t;
     fail(what, "a table");
 }
 
-Vec3 ParamValue::as_vec3(std::string_view what) const {
+Vec3 ParamValue::as_vec3(const ValueName& what) const {
     const auto* a = std::get_if<Array>(&data_);
     if (!a || a->size() != 3) fail(what, "[x, y, z], an array of 3 numbers");
-    return {(*a)[0].as_float(element_name(what, 0)), (*a)[1].as_float(element_name(what, 1)),
-            (*a)[2].as_float(element_name(what, 2))};
+    return {(*a)[0].as_float(ValueName(what, 0)), (*a)[1].as_float(ValueName(what, 1)),
+            (*a)[2].as_float(ValueName(what, 2))};
 }
 
-Vec2 ParamValue::as_vec2(std::string_view what) const {
+Vec2 ParamValue::as_vec2(const ValueName& what) const {
     const auto* a = std::get_if<Array>(&data_);
     if (!a || a->size() != 2) fail(what, "[x, y], an array of 2 numbers");
-    return {(*a)[0].as_float(element_name(what, 0)), (*a)[1].as_float(element_name(what, 1))};
+    return {(*a)[0].as_float(ValueName(what, 0)), (*a)[1].as_float(ValueName(what, 1))};
 }
 
-Color ParamValue::as_color(std::string_view what) const {
+Color ParamValue::as_color(const ValueName& what) const {
     constexpr std::string_view expected = "a colour: [r, g, b] of non-negative numbers, or one number for a grey";
     Color c;
     if (is_number()) {
@@ -104,8 +107,8 @@ Color ParamValue::as_color(std::string_view what) const {
     } else {
         const auto* a = std::get_if<Array>(&data_);
         if (!a || a->size() != 3) fail(what, expected);
-        c = Color((*a)[0].as_float(element_name(what, 0)), (*a)[1].as_float(element_name(what, 1)),
-                  (*a)[2].as_float(element_name(what, 2)));
+        c = Color((*a)[0].as_float(ValueName(what, 0)), (*a)[1].as_float(ValueName(what, 1)),
+                  (*a)[2].as_float(ValueName(what, 2)));
     }
     if (c.r < 0.0f || c.g < 0.0f || c.b < 0.0f) fail(what, expected);
     return c;
@@ -149,91 +152,103 @@ const ParamValue& ParamTable::require(std::string_view key, std::string_view exp
 
 float ParamTable::number(std::string_view key, float fallback) const {
     const ParamValue* v = find(key);
-    return v ? v->as_float(name_of(key)) : fallback;
+    return v ? v->as_float(ValueName(*this, key)) : fallback;
 }
 
-float ParamTable::require_number(std::string_view key) const { return require(key, "a number").as_float(name_of(key)); }
+float ParamTable::require_number(std::string_view key) const {
+    return require(key, "a number").as_float(ValueName(*this, key));
+}
 
 int64_t ParamTable::integer(std::string_view key, int64_t fallback) const {
     const ParamValue* v = find(key);
-    return v ? v->as_integer(name_of(key)) : fallback;
+    return v ? v->as_integer(ValueName(*this, key)) : fallback;
 }
 
 bool ParamTable::boolean(std::string_view key, bool fallback) const {
     const ParamValue* v = find(key);
-    return v ? v->as_bool(name_of(key)) : fallback;
+    return v ? v->as_bool(ValueName(*this, key)) : fallback;
 }
 
 std::string ParamTable::string(std::string_view key, std::string_view fallback) const {
     const ParamValue* v = find(key);
-    return v ? v->as_string(name_of(key)) : std::string(fallback);
+    return v ? v->as_string(ValueName(*this, key)) : std::string(fallback);
 }
 
 const std::string& ParamTable::require_string(std::string_view key) const {
-    return require(key, "a string").as_string(name_of(key));
+    return require(key, "a string").as_string(ValueName(*this, key));
 }
 
 Vec3 ParamTable::vec3(std::string_view key, const Vec3& fallback) const {
     const ParamValue* v = find(key);
-    return v ? v->as_vec3(name_of(key)) : fallback;
+    return v ? v->as_vec3(ValueName(*this, key)) : fallback;
 }
 
-Vec3 ParamTable::require_vec3(std::string_view key) const { return require(key, "[x, y, z]").as_vec3(name_of(key)); }
+Vec3 ParamTable::require_vec3(std::string_view key) const {
+    return require(key, "[x, y, z]").as_vec3(ValueName(*this, key));
+}
 
 Vec2 ParamTable::vec2(std::string_view key, const Vec2& fallback) const {
     const ParamValue* v = find(key);
-    return v ? v->as_vec2(name_of(key)) : fallback;
+    return v ? v->as_vec2(ValueName(*this, key)) : fallback;
 }
 
 Color ParamTable::color(std::string_view key, const Color& fallback) const {
     const ParamValue* v = find(key);
-    return v ? v->as_color(name_of(key)) : fallback;
+    return v ? v->as_color(ValueName(*this, key)) : fallback;
 }
 
 std::vector<Vec3> ParamTable::vec3_list(std::string_view key, bool required) const {
     std::vector<Vec3> out;
     const ParamValue* v = required ? &require(key, "an array of [x, y, z]") : find(key);
     if (!v) return out;
-    const auto& a = v->as_array(name_of(key));
-    for (std::size_t i = 0; i < a.size(); ++i) out.push_back(a[i].as_vec3(element_name(name_of(key), i)));
+    const ValueName name(*this, key);
+    const auto& a = v->as_array(name);
+    for (std::size_t i = 0; i < a.size(); ++i) out.push_back(a[i].as_vec3(ValueName(name, i)));
     return out;
 }
 
 std::vector<Vec2> ParamTable::vec2_list(std::string_view key) const {
     std::vector<Vec2> out;
     if (const ParamValue* v = find(key)) {
-        const auto& a = v->as_array(name_of(key));
-        for (std::size_t i = 0; i < a.size(); ++i) out.push_back(a[i].as_vec2(element_name(name_of(key), i)));
+        const ValueName name(*this, key);
+        const auto& a = v->as_array(name);
+        for (std::size_t i = 0; i < a.size(); ++i) out.push_back(a[i].as_vec2(ValueName(name, i)));
     }
     return out;
 }
 
 std::string ParamTable::choice(std::string_view key, std::span<const std::string_view> choices,
                                std::string_view fallback) const {
-    std::vector<std::string> names(choices.begin(), choices.end());
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "\"" : ", \"") + n + "\"";
-    const ParamValue* v = fallback.empty() ? &require(key, "one of " + list) : find(key);
-    if (!v) return std::string(fallback);
-    const std::string& s = v->as_string(name_of(key));
-    if (std::find(names.begin(), names.end(), s) == names.end())
-        v->fail(name_of(key), "one of " + list + did_you_mean(s, names));
+    // The list of choices is spelt out only for a message: this runs once per object.
+    const auto one_of = [&] {
+        std::string list;
+        for (const std::string_view c : choices) list += fmt::format("{}\"{}\"", list.empty() ? "" : ", ", c);
+        return "one of " + list;
+    };
+    const ParamValue* v = find(key);
+    if (!v) {
+        if (fallback.empty()) static_cast<void>(require(key, one_of()));
+        return std::string(fallback);
+    }
+    const std::string& s = v->as_string(ValueName(*this, key));
+    if (std::find(choices.begin(), choices.end(), s) == choices.end())
+        v->fail(name_of(key), one_of() + did_you_mean(s, std::vector<std::string>(choices.begin(), choices.end())));
     return s;
 }
 
 const ParamTable* ParamTable::table(std::string_view key) const {
     const ParamValue* v = find(key);
-    return v ? &v->as_table(name_of(key)) : nullptr;
+    return v ? &v->as_table(ValueName(*this, key)) : nullptr;
 }
 
 std::vector<const ParamTable*> ParamTable::tables(std::string_view key) const {
     std::vector<const ParamTable*> out;
     const ParamValue* v = find(key);
     if (!v) return out;
-    const std::string name = name_of(key);
+    const ValueName name(*this, key);
     if (!v->is_array()) v->fail(name, fmt::format("an array of tables, written [[{}]]", key));
     const auto& elements = v->as_array(name);
-    for (std::size_t i = 0; i < elements.size(); ++i) out.push_back(&elements[i].as_table(element_name(name, i)));
+    for (std::size_t i = 0; i < elements.size(); ++i) out.push_back(&elements[i].as_table(ValueName(name, i)));
     return out;
 }
 
@@ -254,6 +269,10 @@ void ParamTable::reject_unknown_keys() const {
         throw_scene_error(e.key_where, fmt::format("unknown key '{}' {}{}; expected {}", e.key, where,
                                                    did_you_mean(e.key, known), expected));
     }
+    // Every key was read: the names asked for, kept only to suggest one for a misspelt key,
+    // are not needed again (a later call finds nothing unread). 100,000 objects would
+    // otherwise keep tens of megabytes of them.
+    std::vector<std::string>().swap(known_keys_);
 }
 
 void ParamTable::reject_unknown_keys_recursive() const {

@@ -4,13 +4,17 @@
 #include "glint/scene_format/toml_scene_loader.h"
 
 #include "glint/scene_format/param_table.h"
-#include "scene_builder.h"
 #include "glint/scene_format/source_excerpt.h"
+#include "scene_builder.h"
 
+// toml++ compiled here, header-only (src/CMakeLists.txt says why), with floats read by
+// std::from_chars (exact, locale-free; GCC 12 has it) and without its writers.
+#define TOML_HEADER_ONLY 1
+#define TOML_FLOAT_CHARCONV 1
+#define TOML_ENABLE_FORMATTERS 0
 #include <toml++/toml.h>
 
 #include <fstream>
-#include <sstream>
 
 namespace glint {
 
@@ -22,35 +26,53 @@ SourceLocation location(const toml::source_region& region, const FileName& file)
     return {file, region.begin.line, region.begin.column};
 }
 
-std::shared_ptr<const ParamTable> convert_table(const toml::table& table, const std::string& path,
-                                                const FileName& file);
+std::shared_ptr<const ParamTable> convert_table(toml::table& table, const std::string& path, const FileName& file);
 
-ParamValue convert(const toml::node& node, const std::string& path, const FileName& file) {
+/// The ParamValue of `node`, which is named `path` in messages. Tables and arrays are
+/// emptied as they are converted, so that a large scene is never held twice: the toml++
+/// tree of 100,000 objects alone takes 240 MB.
+ParamValue convert(toml::node& node, const std::string& path, const FileName& file) {
     const SourceLocation where = location(node.source(), file);
     switch (node.type()) {
-        case toml::node_type::table: return {convert_table(*node.as_table(), path, file), where};
+        case toml::node_type::table:
+            return {convert_table(*node.as_table(), path, file), where};
         case toml::node_type::array: {
             ParamValue::Array elements;
-            const toml::array& array = *node.as_array();
-            for (std::size_t i = 0; i < array.size(); ++i)
-                elements.push_back(convert(array[i], path + "[" + std::to_string(i) + "]", file));
+            toml::array& array = *node.as_array();
+            elements.reserve(array.size());
+            for (std::size_t i = 0; i < array.size(); ++i) {
+                toml::node& element = array[i];
+                // Numbers and strings need no name of their own (a ParamValue's reader is
+                // given one); tables keep theirs (ParamTable::path), and a date is refused by it.
+                const bool nested = element.is_table() || element.is_array();
+                const bool named = nested || element.is_date() || element.is_time() || element.is_date_time();
+                elements.push_back(convert(element, named ? path + "[" + std::to_string(i) + "]" : path, file));
+                if (nested) array.replace(array.cbegin() + std::ptrdiff_t(i), false);
+            }
+            array.clear();
             return {std::move(elements), where};
         }
-        case toml::node_type::string: return {node.as_string()->get(), where};
-        case toml::node_type::integer: return {node.as_integer()->get(), where};
-        case toml::node_type::floating_point: return {node.as_floating_point()->get(), where};
-        case toml::node_type::boolean: return {node.as_boolean()->get(), where};
-        default: throw_scene_error(where, path + " is a date or time; scene files use numbers, strings and arrays");
+        case toml::node_type::string:
+            return {std::move(*node.as_string()).get(), where};
+        case toml::node_type::integer:
+            return {node.as_integer()->get(), where};
+        case toml::node_type::floating_point:
+            return {node.as_floating_point()->get(), where};
+        case toml::node_type::boolean:
+            return {node.as_boolean()->get(), where};
+        default:
+            throw_scene_error(where, path + " is a date or time; scene files use numbers, strings and arrays");
     }
 }
 
-std::shared_ptr<const ParamTable> convert_table(const toml::table& table, const std::string& path,
-                                                const FileName& file) {
+std::shared_ptr<const ParamTable> convert_table(toml::table& table, const std::string& path, const FileName& file) {
     auto out = std::make_shared<ParamTable>(path, location(table.source(), file));
-    for (const auto& [key, node] : table) {
+    out->reserve(table.size());
+    for (auto& [key, node] : table) {
         const std::string name(key.str());
         out->add(name, location(key.source(), file), convert(node, path.empty() ? name : path + "." + name, file));
     }
+    table.clear();
     return out;
 }
 
@@ -82,9 +104,11 @@ LoadedScene load_toml_scene(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path.string() + ": no such scene file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path.string() + ": cannot open the scene file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return load_toml_scene_string(text.str(), path.string(), path.parent_path());
+    // Read into one string of the file's size (a stringstream would hold it twice).
+    std::string text(std::filesystem::file_size(path, ec), '\0');
+    if (ec || !in.read(text.data(), std::streamsize(text.size())) || in.peek() != std::ifstream::traits_type::eof())
+        throw SceneError(path.string() + ": cannot read the scene file");
+    return load_toml_scene_string(text, path.string(), path.parent_path());
 }
 
 }  // namespace glint

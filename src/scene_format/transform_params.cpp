@@ -8,14 +8,14 @@ namespace glint {
 
 namespace {
 
-Transform scaling(const ParamValue& value, const std::string& what) {
+Transform scaling(const ParamValue& value, const ValueName& what) {
     const Vec3 s = value.is_number() ? Vec3(value.as_float(what)) : value.is_array() ? value.as_vec3(what) : Vec3(0.0f);
     if (!value.is_number() && !value.is_array()) value.fail(what, "a scale factor or [sx, sy, sz]");
     if (s.x == 0.0f || s.y == 0.0f || s.z == 0.0f) value.fail(what, "non-zero scale factors");
     return Transform::scale(s);
 }
 
-Transform rotation(const ParamValue& value, const std::string& what) {
+Transform rotation(const ParamValue& value, const ValueName& what) {
     constexpr std::string_view expected = "Euler angles [x, y, z] in degrees, or { axis = [x, y, z], degrees = a }";
     if (value.is_table()) {
         const ParamTable& t = value.as_table(what);
@@ -32,13 +32,13 @@ Transform rotation(const ParamValue& value, const std::string& what) {
            Transform::rotate(e.x, Vec3(1, 0, 0));
 }
 
-Transform matrix(const ParamValue& value, const std::string& what) {
+Transform matrix(const ParamValue& value, const ValueName& what) {
     constexpr std::string_view expected = "a row-major 4×4 matrix: 16 numbers or 4 rows of 4";
     if (!value.is_array()) value.fail(what, expected);
     std::vector<const ParamValue*> numbers;
     for (const ParamValue& element : value.as_array(what)) {
         if (element.is_array()) {
-            if (element.as_array(what).size() != 4) element.fail(what + " row", "4 numbers");
+            if (element.as_array(what).size() != 4) element.fail(what.str() + " row", "4 numbers");
             for (const ParamValue& n : element.as_array(what)) numbers.push_back(&n);
         } else {
             numbers.push_back(&element);
@@ -46,7 +46,7 @@ Transform matrix(const ParamValue& value, const std::string& what) {
     }
     if (numbers.size() != 16) value.fail(what, expected);
     Matrix4 m;
-    for (int i = 0; i < 16; ++i) m.m[i / 4][i % 4] = numbers[i]->as_float(fmt::format("{}[{}]", what, i));
+    for (std::size_t i = 0; i < 16; ++i) m.m[i / 4][i % 4] = numbers[i]->as_float(ValueName(what, i));
     if (m.m[3][0] != 0.0f || m.m[3][1] != 0.0f || m.m[3][2] != 0.0f || m.m[3][3] != 1.0f)
         value.fail(what, "an affine matrix (last row 0, 0, 0, 1)");
     try {
@@ -69,21 +69,20 @@ Transform step(const ParamTable& t) {
             fmt::format("{} has {} steps; expected exactly one of scale, rotate, translate, matrix per table "
                         "(the list gives the order)",
                         t.path(), count));
-    if (scale) return scaling(*scale, t.name_of("scale"));
-    if (rotate) return rotation(*rotate, t.name_of("rotate"));
-    if (translate) return Transform::translate(translate->as_vec3(t.name_of("translate")));
-    return matrix(*mat, t.name_of("matrix"));
+    if (scale) return scaling(*scale, ValueName(t, "scale"));
+    if (rotate) return rotation(*rotate, ValueName(t, "rotate"));
+    if (translate) return Transform::translate(translate->as_vec3(ValueName(t, "translate")));
+    return matrix(*mat, ValueName(t, "matrix"));
 }
 
 }  // namespace
 
-Transform read_transform(const ParamValue& value, std::string_view what) {
-    const std::string name(what);
+Transform read_transform(const ParamValue& value, const ValueName& name) {
     if (value.is_array()) {
         Transform world_from_object;
         const auto& steps = value.as_array(name);
         for (std::size_t i = 0; i < steps.size(); ++i)
-            world_from_object = step(steps[i].as_table(fmt::format("{}[{}]", name, i))) * world_from_object;
+            world_from_object = step(steps[i].as_table(ValueName(name, i))) * world_from_object;
         return world_from_object;
     }
     if (!value.is_table()) value.fail(name, "a table { scale, rotate, translate } or an array of such steps");
@@ -91,19 +90,19 @@ Transform read_transform(const ParamValue& value, std::string_view what) {
     if (t.find("matrix")) {
         // A matrix is the whole transform; combining it with steps needs the list form's order.
         if (t.find("scale") || t.find("rotate") || t.find("translate"))
-            t.fail_here(name +
+            t.fail_here(name.str() +
                         " has a matrix and other steps; expected either alone, or a list of steps to give "
                         "their order");
-        const Transform m = matrix(*t.find("matrix"), t.name_of("matrix"));
+        const Transform m = matrix(*t.find("matrix"), ValueName(t, "matrix"));
         t.reject_unknown_keys();
         return m;
     }
     Transform world_from_object;
-    if (const ParamValue* s = t.find("scale")) world_from_object = scaling(*s, t.name_of("scale"));
+    if (const ParamValue* s = t.find("scale")) world_from_object = scaling(*s, ValueName(t, "scale"));
     if (const ParamValue* r = t.find("rotate"))
-        world_from_object = rotation(*r, t.name_of("rotate")) * world_from_object;
+        world_from_object = rotation(*r, ValueName(t, "rotate")) * world_from_object;
     if (const ParamValue* tr = t.find("translate"))
-        world_from_object = Transform::translate(tr->as_vec3(t.name_of("translate"))) * world_from_object;
+        world_from_object = Transform::translate(tr->as_vec3(ValueName(t, "translate"))) * world_from_object;
     t.reject_unknown_keys();
     return world_from_object;
 }

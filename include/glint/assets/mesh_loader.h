@@ -68,8 +68,11 @@ private:
     /// The live entry for `path` (canonical form), null if not read yet or stale.
     [[nodiscard]] Entry* find(const std::filesystem::path& path) const;
     Entry& insert(const std::filesystem::path& path, std::unique_ptr<Entry> entry);
+    /// `path` in the canonical form that keys the entries, resolved on disk once per path.
+    [[nodiscard]] const std::filesystem::path& canonical(const std::filesystem::path& path);
 
     std::map<std::string, std::unique_ptr<Entry>> entries_;
+    std::map<std::string, std::filesystem::path> canonical_paths_;
 };
 
 /// A bare mesh file (PLY, OBJ, STL, FBX...) as a scene: its meshes and materials, a framing

@@ -19,6 +19,8 @@ struct Matrix4 {
     [[nodiscard]] static Matrix4 identity();
     [[nodiscard]] Matrix4 operator*(const Matrix4& o) const;
     [[nodiscard]] Matrix4 transposed() const;
+    /// Whether the last row is exactly 0, 0, 0, 1.
+    [[nodiscard]] bool is_affine() const { return m[3] == std::array<float, 4>{0.0f, 0.0f, 0.0f, 1.0f}; }
     /// General inverse by cofactors in double precision; returns false if singular.
     [[nodiscard]] bool inverse(Matrix4& out) const;
     bool operator==(const Matrix4&) const = default;

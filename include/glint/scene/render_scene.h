@@ -7,6 +7,7 @@
 #include "glint/accel/bvh.h"
 #include "glint/lights/area_light.h"
 #include "glint/lights/environment_light.h"
+#include "glint/math/matrix3x4.h"
 #include "glint/scene/scene.h"
 
 #include <memory>
@@ -89,15 +90,15 @@ private:
     /// (world_from_object, name) stays in the description.
     struct HotObject {
         const Shape* shape = nullptr;
+        /// Set for a moving object: object_from_world is then made at each ray's time.
+        const AnimatedTransform* motion = nullptr;
         /// Valid when `transformed`: rays go into object space by this (t is kept).
-        Transform object_from_world;
+        Matrix3x4 object_from_world;
         bool transformed = false;
         /// Its material is a dielectric (for shadow rays under DielectricShadows::None).
         bool dielectric = false;
         /// Index into area_lights_ (−1: none).
         int32_t area_light = -1;
-        /// Set for a moving object: object_from_world is then made at each ray's time.
-        const AnimatedTransform* motion = nullptr;
     };
 
     void build_area_lights();

@@ -102,7 +102,7 @@ public:
     [[nodiscard]] bool has_emitters() const;
 
     /// Place `shape` with `material`; several objects may share one shape (instancing).
-    /// Returns the object's index.
+    /// Returns the object's index; std::invalid_argument for a transform that is not affine.
     uint32_t add_object(std::shared_ptr<Shape> shape, uint32_t material,
                         const std::optional<Transform>& world_from_object = std::nullopt, std::string name = {});
     [[nodiscard]] const std::vector<SceneObject>& objects() const { return objects_; }

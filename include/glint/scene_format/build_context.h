@@ -33,7 +33,8 @@ public:
     void warn(std::string message) const { warnings_.push_back(std::move(message)); }
 
     /// The file named by the string `key` of `table`, resolved against the scene file's
-    /// folder. Throws SceneError at the value if there is no such file.
+    /// folder. Throws SceneError at the value if there is no such file. A name is looked up
+    /// on disk once per load (a scene may place one mesh file 100,000 times).
     [[nodiscard]] std::filesystem::path input_file(const ParamTable& table, std::string_view key) const;
     /// The image named by `key`, read once however many textures or backgrounds use it.
     /// Throws SceneError at the value if it cannot be read.
@@ -47,7 +48,7 @@ public:
     void name_texture(std::string name, const Texture* texture) { textures_.emplace(std::move(name), texture); }
     /// The index of the scene material named by the string `value`. Throws SceneError at
     /// the value, suggesting the closest name, if there is none.
-    [[nodiscard]] uint32_t material(const ParamValue& value, std::string_view what) const;
+    [[nodiscard]] uint32_t material(const ParamValue& value, const ValueName& what) const;
 
 private:
     std::filesystem::path base_dir_;
@@ -55,6 +56,8 @@ private:
     MeshCache& meshes_;
     std::vector<std::string>& warnings_;
     std::map<std::string, std::shared_ptr<const Image>> images_;
+    /// Names given to input_file() that were found to be files, resolved.
+    mutable std::map<std::string, std::filesystem::path, std::less<>> found_files_;
     std::map<std::string, const Texture*, std::less<>> textures_;
 };
 

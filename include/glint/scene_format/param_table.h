@@ -25,6 +25,30 @@ namespace glint {
 
 class ParamTable;
 
+/// The name of a value in messages ("objects[3].radius", "camera.position[1]"), spelt out
+/// only when a message needs it: a scene of 100,000 objects reads a million values, and
+/// building each one's name as a string cost more than reading it. It refers to what it was
+/// made from, so it lives no longer than the call it is passed to.
+class ValueName {
+public:
+    // Implicit: any string names a value.
+    ValueName(std::string_view name) : text_(name) {}    // NOLINT
+    ValueName(const std::string& name) : text_(name) {}  // NOLINT
+    ValueName(const char* name) : text_(name) {}         // NOLINT
+    /// `key` of `table`: "objects[3]" + "radius".
+    ValueName(const ParamTable& table, std::string_view key) : text_(key), table_(&table) {}
+    /// Element `index` of the array named `array`: "camera.position" + "[1]".
+    ValueName(const ValueName& array, std::size_t index) : array_(&array), index_(index) {}
+
+    [[nodiscard]] std::string str() const;
+
+private:
+    std::string_view text_;
+    const ParamTable* table_ = nullptr;
+    const ValueName* array_ = nullptr;
+    std::size_t index_ = 0;
+};
+
 /// One value: a boolean, an integer, a floating-point number, a string, an array or a table.
 class ParamValue {
 public:
@@ -45,21 +69,21 @@ public:
     // throws SceneError at the value's location saying what it is and what was expected.
 
     /// A finite number; integers are accepted.
-    [[nodiscard]] float as_float(std::string_view what) const;
-    [[nodiscard]] int64_t as_integer(std::string_view what) const;
-    [[nodiscard]] bool as_bool(std::string_view what) const;
-    [[nodiscard]] const std::string& as_string(std::string_view what) const;
-    [[nodiscard]] const Array& as_array(std::string_view what) const;
-    [[nodiscard]] const ParamTable& as_table(std::string_view what) const;
+    [[nodiscard]] float as_float(const ValueName& what) const;
+    [[nodiscard]] int64_t as_integer(const ValueName& what) const;
+    [[nodiscard]] bool as_bool(const ValueName& what) const;
+    [[nodiscard]] const std::string& as_string(const ValueName& what) const;
+    [[nodiscard]] const Array& as_array(const ValueName& what) const;
+    [[nodiscard]] const ParamTable& as_table(const ValueName& what) const;
     /// [x, y, z] of finite numbers.
-    [[nodiscard]] Vec3 as_vec3(std::string_view what) const;
+    [[nodiscard]] Vec3 as_vec3(const ValueName& what) const;
     /// [x, y] of finite numbers.
-    [[nodiscard]] Vec2 as_vec2(std::string_view what) const;
+    [[nodiscard]] Vec2 as_vec2(const ValueName& what) const;
     /// [r, g, b], or one number for a grey; components must be finite and non-negative.
-    [[nodiscard]] Color as_color(std::string_view what) const;
+    [[nodiscard]] Color as_color(const ValueName& what) const;
 
     /// Throw SceneError at this value: "<what> is <this value>; expected <expected>".
-    [[noreturn]] void fail(std::string_view what, std::string_view expected) const;
+    [[noreturn]] void fail(const ValueName& what, std::string_view expected) const;
 
 private:
     Storage data_;
@@ -73,6 +97,8 @@ public:
     ParamTable(std::string path, SourceLocation where) : path_(std::move(path)), where_(std::move(where)) {}
 
     void add(std::string key, SourceLocation key_where, ParamValue value);
+    /// Room for `count` keys (a loader that knows how many it will add).
+    void reserve(std::size_t count) { entries_.reserve(count); }
 
     [[nodiscard]] const std::string& path() const { return path_; }
     [[nodiscard]] const SourceLocation& where() const { return where_; }

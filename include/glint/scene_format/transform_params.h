@@ -14,6 +14,6 @@ namespace glint {
 /// `rotate` is an axis and an angle, or Euler angles [x, y, z] in degrees applied about x,
 /// then y, then z. `matrix` gives a row-major 4×4 (16 numbers or 4 rows of 4). Throws
 /// SceneError at the offending value (zero scale, zero axis, singular matrix...).
-[[nodiscard]] Transform read_transform(const ParamValue& value, std::string_view what);
+[[nodiscard]] Transform read_transform(const ParamValue& value, const ValueName& what);
 
 }  // namespace glint
