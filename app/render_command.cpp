@@ -166,8 +166,7 @@ int run_render(const RenderOptions& opt) {
     // The image with the AOVs' channels after its own; an automatic exposure is chosen from it.
     auto image = [&](bool sample_counts) {
         const glint::Image beauty = film.to_image(sample_counts);
-        write_options.exposure = display_transform.exposure.automatic ? glint::auto_exposure_stops(beauty)
-                                                                      : display_transform.exposure.stops;
+        write_options.exposure = glint::exposure_stops(display_transform.exposure, beauty);
         return aovs ? aovs->append_to(beauty) : beauty;
     };
     if (!stats.complete()) {

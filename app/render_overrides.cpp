@@ -28,7 +28,8 @@ void add_render_overrides(CLI::App* command, RenderOverrides& o) {
     command->add_option("--glossy-samples", o.glossy_samples,
                         "Whitted: samples of a rough surface's glossy reflection and refraction (1 to 1024)");
     command->add_option("--mis", o.mis, "Path: multiple importance sampling heuristic")
-        ->check(CLI::IsMember({"balance", "power"}));
+        ->check(CLI::IsMember(
+            std::vector<std::string>(glint::mis_heuristic_names().begin(), glint::mis_heuristic_names().end())));
     command->add_flag("--adaptive", o.adaptive,
                       "Adaptive sampling: each pixel stops once its error is small, --spp (a power of 4) at most");
     command->add_option("--adaptive-threshold", o.adaptive_threshold,

@@ -41,8 +41,9 @@ struct PythonScene {
     std::vector<std::string> warnings;
 };
 
-/// A rendered image and the display transform its scene asks for (used by save() for PNG
-/// and JPEG, as `glint render` uses it).
+/// A rendered image, its channels named (Film::to_image, AovFilm::append_to), and the
+/// display transform its scene asks for (used by save() for PNG and JPEG, as `glint render`
+/// uses it).
 struct PythonImage {
     glint::Image image;
     glint::DisplayTransform display;
@@ -56,12 +57,6 @@ PythonScene load(const std::filesystem::path& path) {
     s.warnings = std::move(file.loaded.warnings);
     s.scene = std::make_shared<const glint::RenderScene>(std::move(file.loaded.scene));
     return s;
-}
-
-std::vector<std::string> channel_names(const glint::Image& image) {
-    if (!image.channel_names.empty()) return image.channel_names;
-    const std::vector<std::string> rgba = {"R", "G", "B", "A"};
-    return {rgba.begin(), rgba.begin() + std::min(image.channels, 4)};
 }
 
 /// The settings render() takes as keywords: the command line's overrides, by the same
@@ -154,7 +149,7 @@ PythonImage render(const PythonScene& scene, const py::kwargs& keywords) {
 /// Channel `name` of `image` as a (height, width) array over the image's own pixels.
 py::array channel(const py::object& self, const std::string& name) {
     const PythonImage& img = py::cast<const PythonImage&>(self);
-    const std::vector<std::string> names = channel_names(img.image);
+    const std::vector<std::string>& names = img.image.channel_names;
     const auto it = std::find(names.begin(), names.end(), name);
     if (it == names.end()) {
         std::string list;
@@ -170,8 +165,7 @@ py::array channel(const py::object& self, const std::string& name) {
 void save(const PythonImage& image, const std::filesystem::path& path) {
     glint::WriteOptions options;
     options.tone_curve = image.display.tone_curve;
-    options.exposure =
-        image.display.exposure.automatic ? glint::auto_exposure_stops(image.image) : image.display.exposure.stops;
+    options.exposure = glint::exposure_stops(image.display.exposure, image.image);
     glint::write_image(path, image.image, options);
 }
 
@@ -205,7 +199,7 @@ PYBIND11_MODULE(glint, m) {
         .def_property_readonly("width", [](const PythonImage& i) { return i.image.width; })
         .def_property_readonly("height", [](const PythonImage& i) { return i.image.height; })
         .def_property_readonly(
-            "channels", [](const PythonImage& i) { return channel_names(i.image); }, "The channels' names.")
+            "channels", [](const PythonImage& i) { return i.image.channel_names; }, "The channels' names.")
         .def("channel", &channel, py::arg("name"),
              "Channel `name` (\"R\", \"albedo.G\", \"Z\", ...) as a (height, width) array over the image's pixels.")
         .def("save", &save, py::arg("path"),

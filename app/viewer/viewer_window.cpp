@@ -252,7 +252,7 @@ void ViewerWindow::explain_pixel(int x, int y) {
 }
 
 float ViewerWindow::exposure_stops(const Image& image) const {
-    return options_.display.exposure.automatic ? auto_exposure_stops(image) : options_.display.exposure.stops;
+    return glint::exposure_stops(options_.display.exposure, image);
 }
 
 void ViewerWindow::save(const std::string& path) {

@@ -16,9 +16,20 @@ constexpr std::array kIntegrators{
     IntegratorEntry{"path", "unidirectional path tracer with next-event estimation and MIS", &PathIntegrator::create},
 };
 
+// In the order of MisHeuristic.
+constexpr std::array<std::string_view, 2> kMisHeuristicNames{"balance", "power"};
+
 }  // namespace
 
 std::span<const IntegratorEntry> integrator_registry() { return kIntegrators; }
+
+std::span<const std::string_view> mis_heuristic_names() { return kMisHeuristicNames; }
+
+std::optional<MisHeuristic> mis_heuristic_from_name(std::string_view name) {
+    if (name == "balance") return MisHeuristic::Balance;
+    if (name == "power") return MisHeuristic::Power;
+    return std::nullopt;
+}
 
 std::vector<std::string_view> integrator_names() {
     std::vector<std::string_view> names;

@@ -7,7 +7,6 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <span>
 #include <stdexcept>
@@ -101,10 +100,9 @@ void apply_overrides(const RenderOverrides& opt, RenderSettings& s, OptionSpelli
     if (opt.glossy_samples)
         s.glossy_samples = in_range(name("glossy-samples"), *opt.glossy_samples, 1, Limits::kMaxGlossySamples);
     if (opt.mis) {
-        constexpr std::array<std::string_view, 2> kHeuristics = {"balance", "power"};
-        if (std::find(kHeuristics.begin(), kHeuristics.end(), *opt.mis) == kHeuristics.end())
-            throw std::invalid_argument(one_of(name("mis"), kHeuristics, *opt.mis));
-        s.mis = *opt.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
+        const std::optional<MisHeuristic> mis = mis_heuristic_from_name(*opt.mis);
+        if (!mis) throw std::invalid_argument(one_of(name("mis"), mis_heuristic_names(), *opt.mis));
+        s.mis = *mis;
     }
     if (opt.aov) s.aovs = parse_aov_list(*opt.aov, name("aov"));
     if (opt.adaptive || opt.adaptive_threshold) {

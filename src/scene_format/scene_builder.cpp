@@ -23,7 +23,6 @@ namespace glint {
 
 namespace {
 
-constexpr std::array<std::string_view, 2> kMisHeuristics{"balance", "power"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 constexpr std::array<std::string_view, 4> kBackgrounds{"color", "spheremap", "equirect", "angmap"};
 constexpr std::array<std::string_view, 2> kShadowModes{"none", "opaque"};
@@ -89,7 +88,7 @@ void read_render(const ParamTable& t, RenderSettings& s) {
     s.integrator = t.choice("integrator", integrators, s.integrator);
     s.light_samples = count(t, "light_samples", s.light_samples, 1, SettingLimits::kMaxLightSamples);
     s.glossy_samples = count(t, "glossy_samples", s.glossy_samples, 1, SettingLimits::kMaxGlossySamples);
-    s.mis = t.choice("mis", kMisHeuristics, "power") == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
+    s.mis = *mis_heuristic_from_name(t.choice("mis", mis_heuristic_names(), "power"));
     s.aovs = read_aovs(t);
     if (const ParamTable* adaptive = t.table("adaptive")) {
         if (t.find("spp"))

@@ -37,6 +37,11 @@ struct DisplayTransform {
 /// no light.
 [[nodiscard]] float auto_exposure_stops(const Image& image);
 
+/// The stops `exposure` gives `image`: its own, or auto_exposure_stops(image) when automatic.
+[[nodiscard]] inline float exposure_stops(const Exposure& exposure, const Image& image) {
+    return exposure.automatic ? auto_exposure_stops(image) : exposure.stops;
+}
+
 /// "auto" or a finite number of stops; nullopt for anything else.
 [[nodiscard]] std::optional<Exposure> parse_exposure(std::string_view text);
 

@@ -6,6 +6,7 @@
 #include "glint/integrators/integrator.h"
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,6 +24,10 @@ struct IntegratorEntry {
 [[nodiscard]] std::span<const IntegratorEntry> integrator_registry();
 /// Their names, for choices in scene files and on the command line.
 [[nodiscard]] std::vector<std::string_view> integrator_names();
+/// The names of the MIS heuristics (MisHeuristic), for choices in scene files and options.
+[[nodiscard]] std::span<const std::string_view> mis_heuristic_names();
+/// The heuristic `name` names ("balance", "power"); nullopt for another name.
+[[nodiscard]] std::optional<MisHeuristic> mis_heuristic_from_name(std::string_view name);
 /// The integrator `settings.integrator` names, made from the settings; throws
 /// std::invalid_argument naming the known ones for an unknown name.
 [[nodiscard]] std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings);
