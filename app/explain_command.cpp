@@ -1,5 +1,5 @@
 #include "explain_command.h"
-#include "explanation_format.h"
+#include "glint/integrators/explanation_format.h"
 
 #include "glint/integrators/integrator.h"
 #include "glint/integrators/integrator_registry.h"

@@ -1,9 +1,10 @@
 #include "progress_bar.h"
 
+#include "glint/util/progress_text.h"
+
 #include <fmt/core.h>
 
 #include <cstdio>
-#include <string>
 
 namespace glint::app {
 
@@ -16,13 +17,8 @@ void ProgressBar::update(uint32_t done, uint32_t total) {
     const auto now = std::chrono::steady_clock::now();
     if (done != total && now - last_draw_ < std::chrono::milliseconds(100)) return;
     last_draw_ = now;
-    const double fraction = double(done) / double(total);
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-    constexpr int kWidth = 40;
-    const int filled = static_cast<int>(fraction * kWidth);
-    const std::string bar = std::string(size_t(filled), '#') + std::string(size_t(kWidth - filled), '.');
-    fmt::print(stderr, "\r[{}] {:5.1f}%  elapsed {:.1f} s  ETA {:.1f} s ", bar, 100.0 * fraction, elapsed, eta);
+    fmt::print(stderr, "\r{} ", progress_text(double(done) / double(total), elapsed));
     std::fflush(stderr);
 }
 

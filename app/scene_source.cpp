@@ -56,10 +56,10 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
         if (!opt.camera.empty())
             throw std::invalid_argument("--camera picks a camera of a glTF file; the built-in scene is not one");
         if (!opt.up.empty())
-            throw std::invalid_argument("--up orients the automatic camera of a mesh or glTF file; the built-in "
-                                        "scene has its own camera");
-        source.loaded.scene = make_spheres_scene();
-        source.loaded.settings.samples_per_axis = 2;
+            throw std::invalid_argument(
+                "--up orients the automatic camera of a mesh or glTF file; the built-in "
+                "scene has its own camera");
+        source.loaded = make_default_scene();
     } else {
         const std::optional<UpAxis> up = opt.up.empty() ? std::nullopt : parse_up_axis(opt.up);
         source = load_scene_file(path, SceneFileOptions{opt.camera, shutter, up});
@@ -92,7 +92,8 @@ SceneSource load_scene(const std::string& path, const SceneOptions& opt) {
 void add_scene_options(CLI::App* cmd, SceneOptions& opt) {
     cmd->add_option("--camera", opt.camera, "glTF camera to render through: name or index (default: the first)");
     cmd->add_option("--up", opt.up,
-                    "Up axis of a mesh or glTF file's automatic camera: x, y or z (scans, CAD); default: the axis an FBX file declares, else y")
+                    "Up axis of a mesh or glTF file's automatic camera: x, y or z (scans, CAD); default: the axis an "
+                    "FBX file declares, else y")
         ->check(CLI::IsMember({"x", "y", "z"}));
     cmd->add_option("--aperture", opt.aperture,
                     "Lens aperture radius in world units: depth of field (0 = pinhole, the default)");
@@ -101,7 +102,8 @@ void add_scene_options(CLI::App* cmd, SceneOptions& opt) {
                     "OPEN,CLOSE: when the shutter is open, in scene time (motion blur; default: the scene's)");
     cmd->add_option("--time", opt.time, "Render the instant T of scene time: no motion blur (the shutter [T, T])");
     cmd->add_option("--env", opt.env, "HDR environment map (background and reflections)")->check(CLI::ExistingFile);
-    cmd->add_option("--env-kind", opt.env_kind, "Environment layout: equirect, spheremap or angmap (default: 2:1 equirect, 1:1 spheremap)")
+    cmd->add_option("--env-kind", opt.env_kind,
+                    "Environment layout: equirect, spheremap or angmap (default: 2:1 equirect, 1:1 spheremap)")
         ->check(CLI::IsMember({"equirect", "spheremap", "angmap", "angular"}));
     cmd->add_option("--env-rotation", opt.env_rotation, "Environment rotation about +y in degrees");
     cmd->add_option("--env-intensity", opt.env_intensity, "Environment radiance scale")->check(CLI::NonNegativeNumber);

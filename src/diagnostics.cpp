@@ -6,7 +6,8 @@ namespace glint {
 
 std::string SourceLocation::to_string() const {
     const std::string name = file ? *file : std::string("<scene>");
-    return line == 0 ? name : fmt::format("{}:{}:{}", name, line, column);
+    if (line == 0) return name;
+    return column == 0 ? fmt::format("{}:{}", name, line) : fmt::format("{}:{}:{}", name, line, column);
 }
 
 void throw_scene_error(const SourceLocation& where, const std::string& message) {

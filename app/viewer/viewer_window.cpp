@@ -1,6 +1,6 @@
 #include "viewer_window.h"
 
-#include "../explanation_format.h"
+#include "glint/integrators/explanation_format.h"
 #include "heatmap.h"
 #include "screenshot.h"
 

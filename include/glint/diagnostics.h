@@ -23,7 +23,8 @@ struct SourceLocation {
     uint32_t line = 0;
     uint32_t column = 0;
 
-    /// "file:line:column", or just "file" when the line is unknown.
+    /// "file:line:column", "file:line" when the column is unknown (a Python call site), or
+    /// just "file" when the line is unknown too.
     [[nodiscard]] std::string to_string() const;
 };
 

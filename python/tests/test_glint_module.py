@@ -41,6 +41,14 @@ def test_a_render_equals_the_command_line_render_bit_for_bit(tmp_path):
         assert np.array_equal(pixels, expected), f"{scene_file.name}: {np.abs(pixels - expected).max()} apart"
 
 
+def test_the_built_in_scene_renders_as_glint_render_with_no_file(tmp_path):
+    out = tmp_path / "default.pfm"
+    subprocess.run([CLI, "render", "--width", "64", "--height", "48", "-q", "-o", str(out)], check=True)
+    scene = glint.default_scene()
+    assert scene.spp == 4
+    assert np.array_equal(np.asarray(glint.render(scene, width=64, height=48)), read_pfm(out))
+
+
 def test_the_same_settings_give_the_same_image_whatever_the_thread_count():
     scene = glint.load(SPHERES)
     one = np.asarray(glint.render(scene, width=40, height=30, threads=1))
@@ -123,3 +131,20 @@ def test_aovs_are_named_channels_after_the_colour(tmp_path):
     assert np.array_equal(pixels[..., :3], plain)
     with pytest.raises(KeyError, match="no channel 'depth'; the image has R, G, B, albedo.R"):
         image.channel("depth")
+
+
+def test_cmake_install_puts_the_module_where_debians_python_finds_it(tmp_path):
+    prefix = tmp_path / "prefix"
+    subprocess.run([os.environ["CMAKE_COMMAND"], "--install", os.environ["GLINT_BUILD_DIR"], "--prefix", str(prefix),
+                    "--component", "python"], check=True, capture_output=True)
+    installed = prefix / os.environ["GLINT_PYTHON_INSTALL_DIR"]
+    env = dict(os.environ, PYTHONPATH=str(installed))
+    code = "import glint; print(glint.__file__); glint.render(glint.default_scene(), width=4, height=3).save('x.exr')"
+    out = subprocess.run(["/usr/bin/python3", "-c", code], check=True, capture_output=True, text=True, env=env,
+                         cwd=tmp_path)
+    assert pathlib.Path(out.stdout.strip()).parent == installed
+    assert (tmp_path / "x.exr").stat().st_size > 0
+    # /usr/local is the default prefix; its dist-packages folder is on Debian's python3 path.
+    paths = subprocess.run(["/usr/bin/python3", "-c", "import sys; print('\\n'.join(sys.path))"], check=True,
+                           capture_output=True, text=True).stdout.split()
+    assert "/usr/local/" + os.environ["GLINT_PYTHON_INSTALL_DIR"] in paths

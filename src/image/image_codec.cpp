@@ -5,6 +5,7 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <string>
@@ -14,15 +15,27 @@ namespace glint::codec {
 namespace {
 
 /// Where the module may be: where the build put it (GLINT_OIIO_MODULE, for every program of
-/// the build tree and its tests), else beside the running program (a copied or installed
-/// glint with the module next to it).
+/// the build tree and its tests); else where `cmake --install` puts it, found from the
+/// running program (bin/glint: lib/glint/ under the same prefix; a copied glint: beside it)
+/// or from the shared object this code is linked into (the Python module: beside it).
 std::vector<std::filesystem::path> module_candidates() {
+    const std::filesystem::path name = std::filesystem::path(GLINT_OIIO_MODULE).filename();
     std::vector<std::filesystem::path> candidates{GLINT_OIIO_MODULE};
     std::array<char, 4096> exe{};
-    if (const ssize_t n = ::readlink("/proc/self/exe", exe.data(), exe.size() - 1); n > 0)
-        candidates.push_back(std::filesystem::path(std::string(exe.data(), std::size_t(n))).parent_path() /
-                             std::filesystem::path(GLINT_OIIO_MODULE).filename());
-    return candidates;
+    if (const ssize_t n = ::readlink("/proc/self/exe", exe.data(), exe.size() - 1); n > 0) {
+        const auto folder = std::filesystem::path(std::string(exe.data(), std::size_t(n))).parent_path();
+        candidates.push_back(folder.parent_path() / "lib" / "glint" / name);
+        candidates.push_back(folder / name);
+    }
+    Dl_info self{};
+    if (::dladdr(reinterpret_cast<const void*>(&module_candidates), &self) != 0 && self.dli_fname &&
+        std::filesystem::path(self.dli_fname).is_absolute())
+        candidates.push_back(std::filesystem::path(self.dli_fname).parent_path() / name);
+    // Each once: in the build tree several name the same file.
+    std::vector<std::filesystem::path> unique;
+    for (const std::filesystem::path& c : candidates)
+        if (std::find(unique.begin(), unique.end(), c) == unique.end()) unique.push_back(c);
+    return unique;
 }
 
 const Functions* load() {

@@ -1,4 +1,4 @@
-#include "scene_builder.h"
+#include "glint/scene_format/scene_builder.h"
 
 #include "object_builder.h"
 

@@ -5,7 +5,7 @@
 
 #include "glint/scene_format/param_table.h"
 #include "glint/scene_format/source_excerpt.h"
-#include "scene_builder.h"
+#include "glint/scene_format/scene_builder.h"
 
 // toml++ compiled here, header-only (src/CMakeLists.txt says why), with floats read by
 // std::from_chars (exact, locale-free; GCC 12 has it) and without its writers.

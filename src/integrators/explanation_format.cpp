@@ -1,4 +1,4 @@
-#include "explanation_format.h"
+#include "glint/integrators/explanation_format.h"
 
 #include "glint/lights/light.h"
 #include "glint/scene/render_scene.h"
@@ -8,7 +8,7 @@
 
 #include <vector>
 
-namespace glint::app {
+namespace glint {
 
 namespace {
 
@@ -147,4 +147,4 @@ std::string explanation_json(const RenderScene& scene, const RenderSettings& s, 
     return out.dump(2);
 }
 
-}  // namespace glint::app
+}  // namespace glint
