@@ -1,6 +1,7 @@
 // glint: the command-line front end of libglint. It parses arguments, loads a scene,
 // renders it and writes the image; everything else lives in the library.
 
+#include "assemble_command.h"
 #include "display_options.h"
 #include "explain_command.h"
 #include "info_command.h"
@@ -27,6 +28,10 @@ int main(int argc, char** argv) {
     render_cmd->add_option("-o,--output", render.output,
                            "Output image: .exr/.hdr/.pfm (linear) or .png/.jpg/.tif (sRGB); default <scene>.png");
     glint::app::add_render_overrides(render_cmd, render.overrides);
+    render_cmd->add_option("--crop", render.overrides.crop,
+                           "Render only the region X0,Y0,X1,Y1: pixels [X0, X1) × [Y0, Y1) from the top left, or "
+                           "fractions of the image (0.5,0,1,0.5: the top-right quarter); an EXR keeps its place in the "
+                           "frame for `glint assemble`");
     glint::app::add_display_options(render_cmd, render.exposure, render.tone_curve);
     render_cmd->add_flag("--resume", render.resume,
                          "Continue an interrupted render from the checkpoint beside the output (<output>.checkpoint)");
@@ -43,6 +48,11 @@ int main(int argc, char** argv) {
     CLI::App* info_cmd = app.add_subcommand("info", "Print what a scene file holds (and, for glTF, what was mapped)");
     info_cmd->add_option("scene", info_path, "Scene file")->required()->check(CLI::ExistingFile);
     glint::app::add_scene_options(info_cmd, info_options);
+
+    glint::app::AssembleOptions assemble;
+    CLI::App* assemble_cmd = app.add_subcommand(
+        "assemble", "Join the crops of one render (glint render --crop, EXR) into the frame they make");
+    glint::app::add_assemble_options(assemble_cmd, assemble);
 
     glint::app::ExplainOptions explain;
     CLI::App* explain_cmd = app.add_subcommand(
@@ -64,6 +74,7 @@ int main(int argc, char** argv) {
     try {
         if (*render_cmd) return glint::app::run_render(render);
         if (*info_cmd) return glint::app::run_info(info_path, info_options);
+        if (*assemble_cmd) return glint::app::run_assemble(assemble);
         if (*explain_cmd) return glint::app::run_explain(explain);
         if (*view_cmd) return glint::app::run_view(view);
     } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 #include "timing.h"
 
 #include "glint/image/filter.h"
+#include "glint/image/frame_assembly.h"
 #include "glint/image/image_io.h"
 #include "glint/integrators/checkpoint.h"
 #include "glint/integrators/integrator_registry.h"
@@ -75,7 +76,13 @@ int stopped_before_rendering(const InterruptGuard& interrupt) {
 int run_render(const RenderOptions& opt) {
     // Every mistake on the command line is reported before the scene is loaded.
     glint::RenderSettings checked;
-    apply_overrides(opt.overrides, checked);
+    RenderOverrides early = opt.overrides;
+    if (early.crop) {
+        // Its form now; whether it fits the image once the scene has given the image's size.
+        (void)glint::parse_crop(*early.crop);
+        early.crop.reset();
+    }
+    apply_overrides(early, checked);
     if (opt.checkpoint_every && !(*opt.checkpoint_every > 0.0))
         throw std::invalid_argument(
             fmt::format("--checkpoint-every: expected a positive number of seconds; got {}", *opt.checkpoint_every));
@@ -163,11 +170,15 @@ int run_render(const RenderOptions& opt) {
         with_display_options(loaded.display, opt.exposure, opt.tone_curve);
     glint::WriteOptions write_options;
     write_options.tone_curve = display_transform.tone_curve;
-    // The image with the AOVs' channels after its own; an automatic exposure is chosen from it.
+    // The image with the AOVs' channels after its own (an automatic exposure is chosen from
+    // it), the crop's pixels alone with a crop, and what rendered it (kept by EXR).
     auto image = [&](bool sample_counts) {
-        const glint::Image beauty = film.to_image(sample_counts);
+        glint::Image beauty = film.to_image(sample_counts);
+        if (aovs) beauty = aovs->append_to(beauty);
+        if (s.crop) beauty = glint::crop_of(beauty, int(s.crop->x0), int(s.crop->y0), int(s.crop->x1), int(s.crop->y1));
         write_options.exposure = glint::exposure_stops(display_transform.exposure, beauty);
-        return aovs ? aovs->append_to(beauty) : beauty;
+        beauty.attributes = fingerprint;
+        return beauty;
     };
     if (!stats.complete()) {
         // Interrupted: keep what is rendered. EXR says per pixel how many samples it has
@@ -191,20 +202,23 @@ int run_render(const RenderOptions& opt) {
     std::string spp = fmt::format("{} spp", s.samples_per_axis * s.samples_per_axis);
     if (s.adaptive) {
         // What adaptive sampling spent, not only what it was allowed.
+        const glint::PixelRect all = s.crop.value_or(glint::PixelRect{0, 0, s.width, s.height});
         uint64_t samples = 0;
-        for (uint32_t y = 0; y < s.height; ++y)
-            for (uint32_t x = 0; x < s.width; ++x) samples += film.samples_at(x, y);
+        for (uint32_t y = all.y0; y < all.y1; ++y)
+            for (uint32_t x = all.x0; x < all.x1; ++x) samples += film.samples_at(x, y);
         spp = fmt::format("adaptive {} to {} spp ({:.1f} on average)", s.adaptive->min_spp,
-                          s.samples_per_axis * s.samples_per_axis, double(samples) / (double(s.width) * s.height));
+                          s.samples_per_axis * s.samples_per_axis,
+                          double(samples) / (double(all.width()) * all.height()));
     }
     // What the display transform did, for display formats (float formats keep radiance).
     std::string display_note;
-    if (!glint::keeps_radiance(output) &&
-        display_transform != glint::DisplayTransform{})
+    if (!glint::keeps_radiance(output) && display_transform != glint::DisplayTransform{})
         display_note = fmt::format(" ({}, exposure {}{:+.2f})", glint::tone_curve_name(display_transform.tone_curve),
-                              display_transform.exposure.automatic ? "auto " : "", write_options.exposure);
-    fmt::print("{}x{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}{}\n",
-               s.width, s.height, spp, load_seconds, build_seconds, stats.seconds, double(stats.rays) * 1e-6,
+                                   display_transform.exposure.automatic ? "auto " : "", write_options.exposure);
+    const std::string crop =
+        s.crop ? fmt::format(" (crop [{}, {}) × [{}, {}))", s.crop->x0, s.crop->x1, s.crop->y0, s.crop->y1) : "";
+    fmt::print("{}x{}{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}{}\n",
+               s.width, s.height, crop, spp, load_seconds, build_seconds, stats.seconds, double(stats.rays) * 1e-6,
                mrays_per_second, output, display_note);
     return 0;
 }

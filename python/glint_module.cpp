@@ -144,7 +144,8 @@ PYBIND11_MODULE(glint, m) {
           "setting as the option of the same name does for `glint render` (light_samples for --light-samples): "
           "width, height, spp (a square number), depth, threads, seed, integrator, filter, filter_radius, "
           "light_samples, glossy_samples, mis, aov (\"albedo,depth\": extra channels), adaptive, "
-          "adaptive_threshold. progress=True draws a bar on sys.stderr; a callable gets (done, total) tiles. "
+          "adaptive_threshold, crop (\"x0,y0,x1,y1\": the image is that region; save() to EXR keeps its place). "
+          "progress=True draws a bar on sys.stderr; a callable gets (done, total) tiles. "
           "Ctrl-C stops the render and raises KeyboardInterrupt. Raises ValueError for a value out of range, "
           "TypeError for an unknown keyword.");
     m.def("explain", &glint::python::explain, py::arg("scene"), py::kw_only(), py::arg("pixel"),

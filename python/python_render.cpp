@@ -4,6 +4,7 @@
 
 #include "glint/image/aov_film.h"
 #include "glint/image/film.h"
+#include "glint/image/frame_assembly.h"
 #include "glint/integrators/explanation_format.h"
 #include "glint/integrators/integrator_registry.h"
 #include "glint/integrators/render_overrides.h"
@@ -28,7 +29,7 @@ struct Keyword {
                  std::optional<double> RenderOverrides::*, bool RenderOverrides::*>
         field;
 };
-const std::array<Keyword, 15> kKeywords = {{
+const std::array<Keyword, 16> kKeywords = {{
     {"width", &RenderOverrides::width},
     {"height", &RenderOverrides::height},
     {"spp", &RenderOverrides::spp},
@@ -41,6 +42,7 @@ const std::array<Keyword, 15> kKeywords = {{
     {"filter", &RenderOverrides::filter},
     {"mis", &RenderOverrides::mis},
     {"aov", &RenderOverrides::aov},
+    {"crop", &RenderOverrides::crop},
     {"filter_radius", &RenderOverrides::filter_radius},
     {"adaptive_threshold", &RenderOverrides::adaptive_threshold},
     {"adaptive", &RenderOverrides::adaptive},
@@ -110,8 +112,12 @@ PythonImage render(PythonScene& scene, const py::object& progress, const py::kwa
             integrator->render(prepared->scene, settings, film, report, &stop, nullptr, aovs ? &*aovs : nullptr);
         },
         progress);
-    const Image beauty = film.to_image();
-    return {aovs ? aovs->append_to(beauty) : beauty, prepared->display};
+    Image image = film.to_image();
+    if (aovs) image = aovs->append_to(image);
+    if (settings.crop)
+        image = crop_of(image, int(settings.crop->x0), int(settings.crop->y0), int(settings.crop->x1),
+                        int(settings.crop->y1));
+    return {std::move(image), prepared->display};
 }
 
 py::object explain(PythonScene& scene, std::pair<int64_t, int64_t> pixel, std::optional<int64_t> sample,

@@ -62,5 +62,44 @@ TEST(RenderOverrides, GoodValuesLandInTheSettings) {
     EXPECT_EQ(s.mis, MisHeuristic::Balance);
 }
 
+TEST(RenderOverrides, CropsArePixelsOrFractionsOfTheImage) {
+    const CropRequest pixels = parse_crop("10,20,30,40");
+    EXPECT_FALSE(pixels.fractions);
+    EXPECT_EQ(crop_pixels(pixels, 100, 50), (PixelRect{10, 20, 30, 40}));
+    // Fractions round up at both ends (pbrt's --cropwindow), so halves tile an odd side.
+    const CropRequest left = parse_crop("0,0,0.5,1"), right = parse_crop("0.5,0,1.0,1");
+    EXPECT_TRUE(left.fractions && right.fractions);
+    EXPECT_EQ(crop_pixels(left, 101, 7), (PixelRect{0, 0, 51, 7}));
+    EXPECT_EQ(crop_pixels(right, 101, 7), (PixelRect{51, 0, 101, 7}));
+    EXPECT_EQ(crop_pixels(parse_crop("0,0,1,1"), 101, 7), (PixelRect{0, 0, 1, 1})) << "whole numbers are pixels";
+    RenderOverrides o;
+    o.width = 64;
+    o.height = 48;
+    o.crop = "0.25,0.5,0.75,1.0";
+    RenderSettings s;
+    apply_overrides(o, s);
+    EXPECT_EQ(s.crop, (PixelRect{16, 24, 48, 48}));
+}
+
+TEST(RenderOverrides, BadCropsAreRefusedInWords) {
+    const auto message = [](const std::string& text, uint32_t width = 640, uint32_t height = 480) {
+        try {
+            (void)crop_pixels(parse_crop(text), width, height);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        ADD_FAILURE() << text << " accepted";
+        return std::string();
+    };
+    for (const char* malformed : {"", "1,2,3", "1,2,3,4,5", "a,b,c,d", "1,,3,4", "0,0,nan,1", "1 ,2,3,4"})
+        EXPECT_EQ(message(malformed).rfind("--crop: expected X0,Y0,X1,Y1", 0), 0u) << malformed;
+    EXPECT_EQ(message("5,5,5,10"), "--crop: expected 0 ≤ X0 < X1 and 0 ≤ Y0 < Y1; got '5,5,5,10'");
+    EXPECT_EQ(message("-1,0,5,5"), "--crop: expected 0 ≤ X0 < X1 and 0 ≤ Y0 < Y1; got '-1,0,5,5'");
+    EXPECT_EQ(message("0,0,1.5,1").rfind("--crop: fractions of the image go from 0 to 1", 0), 0u);
+    EXPECT_EQ(message("0,0,700,10"), "--crop 0,0,700,10: the region reaches past the 640×480 image");
+    EXPECT_EQ(message("0.31,0,0.35,1", 10, 10),
+              "--crop 0.31,0,0.35,1 (pixels 4,0,4,10): the region covers no pixel of the 10×10 image");
+}
+
 }  // namespace
 }  // namespace glint

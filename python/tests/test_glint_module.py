@@ -148,3 +148,14 @@ def test_cmake_install_puts_the_module_where_debians_python_finds_it(tmp_path):
     paths = subprocess.run(["/usr/bin/python3", "-c", "import sys; print('\\n'.join(sys.path))"], check=True,
                            capture_output=True, text=True).stdout.split()
     assert "/usr/local/" + os.environ["GLINT_PYTHON_INSTALL_DIR"] in paths
+
+
+def test_a_crop_is_the_region_of_the_full_render(tmp_path):
+    scene = glint.load(SPHERES)
+    full = np.asarray(glint.render(scene, width=40, height=30, spp=1))
+    crop = glint.render(scene, width=40, height=30, spp=1, crop="5,7,25,30")
+    assert np.array_equal(np.asarray(crop), full[7:30, 5:25])
+    quarter = glint.render(scene, width=40, height=30, spp=1, crop="0.5,0.5,1,1")
+    assert np.array_equal(np.asarray(quarter), full[15:, 20:])
+    with pytest.raises(ValueError, match=r"^crop 0,0,41,30: the region reaches past the 40×30 image"):
+        glint.render(scene, width=40, height=30, crop="0,0,41,30")

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glint::codec {
@@ -30,6 +31,10 @@ struct DecodedImage {
     bool linear_tagged = false;
     /// The channel the file marks as alpha (coverage), -1 for none.
     int alpha_channel = -1;
+    /// The data window inside the display window (EXR); frame_width 0 when they are one.
+    int x = 0, y = 0, frame_width = 0, frame_height = 0;
+    /// The header's "glint:NAME" text attributes, as (NAME, text).
+    std::vector<std::pair<std::string, std::string>> attributes;
 };
 
 /// Called with a header's size before any pixel is allocated or read: a message refuses the
@@ -44,6 +49,11 @@ struct PixelsToWrite {
     bool floats = false;
     /// Channel names to store (EXR AOVs); null for R, G, B.
     const std::vector<std::string>* channel_names = nullptr;
+    /// A data window at (x, y) in a display window of frame_width × frame_height (EXR);
+    /// frame_width 0: the pixels are the whole image.
+    int x = 0, y = 0, frame_width = 0, frame_height = 0;
+    /// Text attributes to store as "glint:NAME" (EXR); may be null.
+    const std::vector<std::pair<std::string, std::string>>* attributes = nullptr;
 };
 
 struct Functions {

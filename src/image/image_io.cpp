@@ -64,6 +64,8 @@ Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
     image.channels = decoded.channels;
     image.pixels = std::move(decoded.pixels);
     image.channel_names = std::move(decoded.channel_names);
+    image.region = {decoded.x, decoded.y, decoded.frame_width, decoded.frame_height};
+    image.attributes = std::move(decoded.attributes);
     if (encoding == ColorEncoding::Color && decoded.integer_data && !decoded.linear_tagged) {
         // Grey+alpha and RGBA files without an alpha tag keep their last channel as alpha.
         int alpha = decoded.alpha_channel;
@@ -181,8 +183,20 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
     } else if (ext == ".png") {
         error = write_png(tmp, image.width, image.height, channels, data.data());
     } else {
-        const codec::PixelsToWrite pixels{image.width, image.height, channels, data.data(), keep_linear,
-                                          named ? &image.channel_names : nullptr};
+        // Only EXR keeps where the pixels lie in a frame, and text beside them.
+        const bool exr = ext == ".exr";
+        const FrameRegion region = exr ? image.region : FrameRegion{};
+        const codec::PixelsToWrite pixels{image.width,
+                                          image.height,
+                                          channels,
+                                          data.data(),
+                                          keep_linear,
+                                          named ? &image.channel_names : nullptr,
+                                          region.x,
+                                          region.y,
+                                          region.frame_width,
+                                          region.frame_height,
+                                          exr ? &image.attributes : nullptr};
         error = codec::oiio().write_file(path.string(), tmp.string(), pixels);
     }
     if (!error.empty()) {

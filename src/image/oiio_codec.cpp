@@ -17,6 +17,9 @@ using glint::codec::DecodedImage;
 using glint::codec::PixelsToWrite;
 using glint::codec::SizeCheck;
 
+/// Glint's own header attributes: "glint:scene", "glint:spp", ...
+const std::string kAttributePrefix = "glint:";
+
 /// Pixels of an opened image as floats, with what the header says about them.
 std::string read_pixels(OIIO::ImageInput& input, const SizeCheck& check, DecodedImage& out) {
     const OIIO::ImageSpec& spec = input.spec();
@@ -30,11 +33,24 @@ std::string read_pixels(OIIO::ImageInput& input, const SizeCheck& check, Decoded
         return "cannot read image: " + input.geterror();
     input.close();
     out.channel_names.assign(spec.channelnames.begin(), spec.channelnames.end());
-    out.integer_data = !(spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                         spec.format.basetype == OIIO::TypeDesc::HALF || spec.format.basetype == OIIO::TypeDesc::DOUBLE);
+    out.integer_data =
+        !(spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
+          spec.format.basetype == OIIO::TypeDesc::DOUBLE);
     const std::string color_space = spec.get_string_attribute("oiio:ColorSpace");
     out.linear_tagged = color_space == "Linear" || color_space == "linear";
     out.alpha_channel = spec.alpha_channel;
+    if (spec.x != spec.full_x || spec.y != spec.full_y || spec.width != spec.full_width ||
+        spec.height != spec.full_height) {
+        out.x = spec.x - spec.full_x;
+        out.y = spec.y - spec.full_y;
+        out.frame_width = spec.full_width;
+        out.frame_height = spec.full_height;
+    }
+    for (const OIIO::ParamValue& attribute : spec.extra_attribs) {
+        const std::string name = attribute.name().string();
+        if (name.rfind(kAttributePrefix, 0) == 0 && attribute.type() == OIIO::TypeDesc::STRING)
+            out.attributes.emplace_back(name.substr(kAttributePrefix.size()), attribute.get_string());
+    }
     return "";
 }
 
@@ -120,6 +136,15 @@ std::string write_file(const std::string& format_name, const std::string& file, 
         }
         spec.attribute("oiio:ColorSpace", pixels.floats ? "Linear" : "sRGB");
         spec.attribute("Software", "Glint");
+        if (pixels.frame_width > 0) {
+            spec.x = pixels.x;
+            spec.y = pixels.y;
+            spec.full_x = spec.full_y = 0;
+            spec.full_width = pixels.frame_width;
+            spec.full_height = pixels.frame_height;
+        }
+        if (pixels.attributes)
+            for (const auto& [name, text] : *pixels.attributes) spec.attribute(kAttributePrefix + name, text);
         if (!(output->open(file, spec) && output->write_image(OIIO::TypeDesc::FLOAT, pixels.data) && output->close()))
             return "cannot write image: " + output->geterror();
         return "";

@@ -177,10 +177,19 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
     TileGrid& grid = tiles ? *tiles : own_tiles;
     if (grid.width() != width || grid.height() != height)
         throw std::invalid_argument("tile grid and film differ in size");
-    const uint32_t tile_count = grid.count();
+    // The tiles to render: all, or those that overlap the crop.
+    std::vector<uint32_t> order;
+    uint32_t already_done = 0;
+    for (uint32_t tile = 0; tile < grid.count(); ++tile) {
+        const TileGrid::Bounds b = grid.bounds(tile);
+        if (settings.crop && !settings.crop->overlaps(PixelRect{b.x0, b.y0, b.x1, b.y1})) continue;
+        order.push_back(tile);
+        already_done += grid.done(tile) ? 1 : 0;
+    }
+    const auto tile_count = uint32_t(order.size());
     const uint32_t n = settings.samples_per_axis;
     std::atomic<uint64_t> rays{0};
-    std::atomic<uint32_t> finished{grid.done_count()};
+    std::atomic<uint32_t> finished{already_done};
 
     auto render_tile = [&](uint32_t tile) {
         if (grid.done(tile) || (stop && stop->load(std::memory_order_relaxed))) return;
@@ -228,7 +237,7 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
         const uint32_t done = ++finished;
         if (progress) progress(done, tile_count);
     };
-    for_each_tile(settings.threads, tile_count, render_tile);
+    for_each_tile(settings.threads, tile_count, [&](uint32_t i) { render_tile(order[i]); });
     RenderStats stats;
     stats.rays = rays.load();
     stats.tiles_done = finished.load();

@@ -7,6 +7,8 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <span>
 #include <stdexcept>
@@ -51,6 +53,56 @@ std::vector<Aov> parse_aov_list(std::string_view list, std::string_view option) 
         start = end + 1;
     }
     return aovs;
+}
+
+CropRequest parse_crop(std::string_view text, std::string_view name) {
+    const std::string expected = fmt::format(
+        "{}: expected X0,Y0,X1,Y1: the region [X0, X1) × [Y0, Y1) in pixels from the top left, or in fractions of "
+        "the image from 0 to 1 (0,0,0.5,0.5: the top-left quarter); got '{}'",
+        name, text);
+    CropRequest crop;
+    std::array<double*, 4> values{&crop.x0, &crop.y0, &crop.x1, &crop.y1};
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const std::size_t end = i + 1 < values.size() ? text.find(',', start) : text.size();
+        if (end == std::string_view::npos) throw std::invalid_argument(expected);
+        const std::string_view number = text.substr(start, end - start);
+        const auto [rest, error] = std::from_chars(number.data(), number.data() + number.size(), *values[i]);
+        if (number.empty() || error != std::errc() || rest != number.data() + number.size() ||
+            !std::isfinite(*values[i]))
+            throw std::invalid_argument(expected);
+        crop.fractions = crop.fractions || number.find_first_of(".eE") != std::string_view::npos;
+        start = end + 1;
+    }
+    if (std::min({crop.x0, crop.y0, crop.x1, crop.y1}) < 0.0 || crop.x0 >= crop.x1 || crop.y0 >= crop.y1)
+        throw std::invalid_argument(fmt::format("{}: expected 0 ≤ X0 < X1 and 0 ≤ Y0 < Y1; got '{}'", name, text));
+    if (crop.fractions && std::max({crop.x1, crop.y1}) > 1.0)
+        throw std::invalid_argument(
+            fmt::format("{}: fractions of the image go from 0 to 1 (pixels are whole numbers); got '{}'", name, text));
+    if (!crop.fractions && std::max({crop.x1, crop.y1}) > double(SettingLimits::kMaxImageSide))
+        throw std::invalid_argument(fmt::format("{}: the region reaches past the largest image, {} pixels; got '{}'",
+                                                name, SettingLimits::kMaxImageSide, text));
+    return crop;
+}
+
+PixelRect crop_pixels(const CropRequest& crop, uint32_t width, uint32_t height, std::string_view name) {
+    const auto pixels = [&](double v, uint32_t side) {
+        return crop.fractions ? uint32_t(std::ceil(v * side)) : uint32_t(v);
+    };
+    const PixelRect rect{pixels(crop.x0, width), pixels(crop.y0, height), pixels(crop.x1, width),
+                         pixels(crop.y1, height)};
+    const auto given = [&] {
+        return crop.fractions ? fmt::format("{},{},{},{} (pixels {},{},{},{})", crop.x0, crop.y0, crop.x1, crop.y1,
+                                            rect.x0, rect.y0, rect.x1, rect.y1)
+                              : fmt::format("{},{},{},{}", rect.x0, rect.y0, rect.x1, rect.y1);
+    };
+    if (rect.x1 > width || rect.y1 > height)
+        throw std::invalid_argument(
+            fmt::format("{} {}: the region reaches past the {}×{} image", name, given(), width, height));
+    if (rect.x0 >= rect.x1 || rect.y0 >= rect.y1)
+        throw std::invalid_argument(
+            fmt::format("{} {}: the region covers no pixel of the {}×{} image", name, given(), width, height));
+    return rect;
 }
 
 void apply_overrides(const RenderOverrides& opt, RenderSettings& s, OptionSpelling spelling) {
@@ -105,6 +157,7 @@ void apply_overrides(const RenderOverrides& opt, RenderSettings& s, OptionSpelli
         s.mis = *mis;
     }
     if (opt.aov) s.aovs = parse_aov_list(*opt.aov, name("aov"));
+    if (opt.crop) s.crop = crop_pixels(parse_crop(*opt.crop, name("crop")), s.width, s.height, name("crop"));
     if (opt.adaptive || opt.adaptive_threshold) {
         AdaptiveSampling adaptive = s.adaptive.value_or(AdaptiveSampling{});
         if (opt.adaptive_threshold) {

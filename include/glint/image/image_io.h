@@ -51,10 +51,11 @@ struct WriteOptions {
 };
 
 /// Write by extension: .exr, .hdr, .pfm keep linear floats; .png, .jpg, .tif, .bmp get
-/// the display transform of `options` and sRGB encoding in 8 bits. An EXR keeps every channel of an image whose
-/// channels are named (Image::channel_names: a partial render's "samples", AOVs); the other
-/// formats, and images without names, write R, G, B. The file is written under a temporary name in the
-/// same folder and renamed, so a failure never leaves a partial image. Throws ImageError.
+/// the display transform of `options` and sRGB encoding in 8 bits. An EXR keeps every channel
+/// of an image whose channels are named (Image::channel_names: a partial render's "samples",
+/// AOVs), its region in a frame as its data window, and its attributes; the other formats
+/// write R, G, B of the pixels alone. The file is written under a temporary name in the same
+/// folder and renamed, so a failure never leaves a partial image. Throws ImageError.
 void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options = {});
 
 /// The temporary name write_image writes `path` under before renaming it into place:

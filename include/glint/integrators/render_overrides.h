@@ -17,7 +17,7 @@ struct RenderOverrides {
     // Numbers are read signed and wide, then checked against the limits scene files have,
     // so that "-4" or "100000" gets a message in words rather than a conversion error.
     std::optional<int64_t> width, height, spp, depth, threads, seed, light_samples, glossy_samples;
-    std::optional<std::string> filter, integrator, mis, aov;
+    std::optional<std::string> filter, integrator, mis, aov, crop;
     std::optional<double> filter_radius, adaptive_threshold;
     bool adaptive = false;
 };
@@ -34,6 +34,24 @@ enum class OptionSpelling { CommandLine, Keyword };
 /// or a filter, integrator or heuristic Glint does not have.
 void apply_overrides(const RenderOverrides& overrides, RenderSettings& settings,
                      OptionSpelling spelling = OptionSpelling::CommandLine);
+
+/// A crop region as given, "X0,Y0,X1,Y1": pixels (integers) or, when any number has a
+/// decimal point, fractions of the image's width and height from 0 to 1 (pbrt's
+/// --cropwindow).
+struct CropRequest {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool fractions = false;
+};
+
+/// `text` as a CropRequest; throws std::invalid_argument naming the setting `name` ("--crop")
+/// unless X0 < X1 and Y0 < Y1, all non-negative, and fractions at most 1.
+[[nodiscard]] CropRequest parse_crop(std::string_view text, std::string_view name = "--crop");
+
+/// The pixels `crop` covers in a width × height image: pixels as given, fractions f as
+/// ceil(f · side) (pbrt's rule, so that crops of 0–0.5 and 0.5–1 tile the image). Throws
+/// std::invalid_argument for a region that reaches past the image or covers no pixel.
+[[nodiscard]] PixelRect crop_pixels(const CropRequest& crop, uint32_t width, uint32_t height,
+                                    std::string_view name = "--crop");
 
 /// "albedo,depth" as AOVs, each once; throws std::invalid_argument for an unknown name,
 /// naming the setting `name` (already spelt: "--aov").

@@ -38,6 +38,16 @@ enum class MisHeuristic { Balance, Power };
     return n;
 }
 
+/// A rectangle of pixels [x0, x1) × [y0, y1), counted from the top left.
+struct PixelRect {
+    uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    [[nodiscard]] uint32_t width() const { return x1 - x0; }
+    [[nodiscard]] uint32_t height() const { return y1 - y0; }
+    [[nodiscard]] bool overlaps(const PixelRect& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+    bool operator==(const PixelRect&) const = default;
+};
+
 /// The accepted range of each numeric setting: one set of limits for scene files and the
 /// command line.
 struct SettingLimits {
@@ -80,6 +90,10 @@ struct RenderSettings {
     std::optional<AdaptiveSampling> adaptive;
     /// Outputs written beside the image as extra EXR channels, in this order, each once.
     std::vector<Aov> aovs;
+    /// Render only this region (--crop): the tiles that overlap it, whole, so that each of its
+    /// pixels is the one a full render gives (the samples of a pixel depend on nothing else,
+    /// and adaptive sampling looks at neighbours within the tile).
+    std::optional<PixelRect> crop;
 };
 
 }  // namespace glint
