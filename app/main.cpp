@@ -40,6 +40,20 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--display-server", render.display_server,
                            "Show the image as it renders in an HDR viewer speaking tev's protocol, at HOST:PORT "
                            "(tev listens on 127.0.0.1:14158)");
+    CLI::Option* frames = render_cmd->add_option(
+        "--frames", render.frames,
+        "Render an animation: frames FIRST-LAST, FIRST-LASTxSTEP or N, comma-separated; -o names "
+        "them with a run of # (out_####.exr); frames already there are skipped");
+    render_cmd->add_option("--fps", render.fps, "With --frames: frames per second; frame F shows scene time F / fps")
+        ->capture_default_str()
+        ->needs(frames);
+    render_cmd
+        ->add_option("--motion-blur", render.motion_blur,
+                     "With --frames: the fraction of a frame (0 to 1) the shutter stays open from its time")
+        ->capture_default_str()
+        ->needs(frames);
+    render_cmd->add_flag("--overwrite", render.overwrite, "With --frames: render frames already there again")
+        ->needs(frames);
     render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors: no progress bar, warnings or summary");
     glint::app::add_scene_options(render_cmd, render.scene);
 

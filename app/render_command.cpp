@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include "display_options.h"
+#include "frame_sequence.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 #include "render_overrides.h"
@@ -73,7 +74,9 @@ int stopped_before_rendering(const InterruptGuard& interrupt) {
 
 }  // namespace
 
-int run_render(const RenderOptions& opt) {
+int run_render(const RenderOptions& opt) { return opt.frames ? render_frames(opt) : render_image(opt); }
+
+int render_image(const RenderOptions& opt) {
     // Every mistake on the command line is reported before the scene is loaded.
     glint::RenderSettings checked;
     RenderOverrides early = opt.overrides;

@@ -28,10 +28,22 @@ struct RenderOptions {
     std::optional<double> checkpoint_every;
     /// Stream the image as it renders to a display server such as tev ("HOST:PORT").
     std::optional<std::string> display_server;
+    /// --frames: render these frames, `output` naming them with a run of '#' (frame_sequence.h).
+    std::optional<std::string> frames;
+    /// Frames per second: frame f shows scene time f / fps.
+    double fps = 24.0;
+    /// The fraction of a frame the shutter is open from the frame's time (0: sharp frames).
+    double motion_blur = 0.0;
+    /// Render frames whose image is already there again.
+    bool overwrite = false;
 };
 
-/// Run `glint render`; returns the exit status (0, or 128 + the signal that interrupted it).
-/// Throws on every error, with a message for the user.
+/// Run `glint render`: one image, or with `frames` an animation. Returns the exit status (0,
+/// or 128 + the signal that interrupted it). Throws on every error, with a message for the
+/// user.
 int run_render(const RenderOptions& options);
+
+/// Render the one image `options.output` (its `frames` unset); run_render's status.
+int render_image(const RenderOptions& options);
 
 }  // namespace glint::app

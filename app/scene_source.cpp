@@ -14,6 +14,7 @@ namespace {
 
 /// The shutter --shutter OPEN,CLOSE or --time T asks for, checked before anything is loaded.
 std::optional<Shutter> shutter_option(const SceneOptions& opt) {
+    if (opt.frame_shutter) return opt.frame_shutter;
     if (opt.shutter && opt.time) throw std::invalid_argument("--time and --shutter: expected one of them, not both");
     if (opt.time) {
         if (!std::isfinite(*opt.time))

@@ -23,6 +23,8 @@ struct SceneOptions {
     /// --shutter OPEN,CLOSE and --time T (an instant, [T, T]), in scene time.
     std::optional<std::string> shutter;
     std::optional<float> time;
+    /// The shutter of one frame of `glint render --frames` (in place of the two above).
+    std::optional<Shutter> frame_shutter;
     /// --up x|y|z: the up axis of a mesh or glTF file's automatic camera.
     std::string up;
 };

@@ -2,15 +2,7 @@
 # Crops for a render farm, end to end: `glint render --crop` writes EXR data windows that
 # `glint assemble` (or oiiotool alone) joins into the image one render makes, bit for bit;
 # every mistake exits 1 with a message and writes nothing. Usage: crop_assemble_test.sh GLINT
-set -u
-glint=$1
-scenes=$(cd "$(dirname "${BASH_SOURCE[0]}")/../scenes" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-same() { idiff -fail 0 -warn 0 "$1" "$2" >/dev/null || fail "$3: $1 and $2 differ"; }
+source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 
 # 1. Four quarters (fractions of an odd-sized image) and three unaligned pixel regions,
 # assembled, equal the full render bit for bit: Whitted with glossy samples, and the path
@@ -76,5 +68,4 @@ refused bad.exr "come from different renders (spp: 4 in q1.exr, 16 in q2.exr)" "
 refused bad.exr "is a whole frame, not a crop" "$glint" assemble full.exr q2.exr -o bad.exr
 refused bad.exr "no such image file\|does not exist" "$glint" assemble missing.exr -o bad.exr
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish
