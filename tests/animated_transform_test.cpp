@@ -113,7 +113,7 @@ TEST(CameraMotion, TheShutterGivesTimesAndRefusesClosingBeforeOpening) {
 
 TEST(CameraMotion, AMovingCameraIsOnItsLineAtEachTime) {
     Camera camera = Camera::perspective({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40.0f);
-    camera.set_motion({2, 0, 5}, {2, 0, 0});
+    camera.set_motion({{0.0f, {0, 0, 5}, {0, 0, 0}}, {1.0f, {2, 0, 5}, {2, 0, 0}}});
     const Ray start = camera.generate_ray(32, 32, 64, 64, {}, 0.0f);
     const Ray middle = camera.generate_ray(32, 32, 64, 64, {}, 0.5f);
     const Ray end = camera.generate_ray(32, 32, 64, 64, {}, 1.0f);
@@ -123,5 +123,21 @@ TEST(CameraMotion, AMovingCameraIsOnItsLineAtEachTime) {
     EXPECT_NEAR(middle.direction.z, -1.0f, 1e-6f);
     // The eye passing through the target on the way is refused.
     Camera through = Camera::perspective({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 40.0f);
-    EXPECT_THROW(through.set_motion({0, 0, -1}, {0, 0, 0}), std::invalid_argument);
+    EXPECT_THROW(through.set_motion({{0.0f, {0, 0, 1}, {0, 0, 0}}, {1.0f, {0, 0, -1}, {0, 0, 0}}}),
+                 std::invalid_argument);
+}
+
+TEST(CameraMotion, KeysAtAnyTimesMoveTheCameraPieceByPiece) {
+    Camera camera = Camera::perspective({9, 9, 9}, {0, 0, 0}, {0, 1, 0}, 40.0f);
+    camera.set_motion({{1.0f, {0, 0, 5}, {0, 0, 0}}, {3.0f, {4, 0, 5}, {4, 0, 0}}, {4.0f, {4, 2, 5}, {4, 2, 0}}});
+    const auto eye_at = [&](float time) { return camera.generate_ray(32, 32, 64, 64, {}, time).origin; };
+    EXPECT_EQ(camera.eye(), Vec3(0, 0, 5)) << "the first key is the camera's pose";
+    EXPECT_EQ(eye_at(0.0f), Vec3(0, 0, 5)) << "held before the first key";
+    EXPECT_EQ(eye_at(2.0f), Vec3(2, 0, 5));
+    EXPECT_EQ(eye_at(3.5f), Vec3(4, 1, 5));
+    EXPECT_EQ(eye_at(9.0f), Vec3(4, 2, 5)) << "held after the last";
+    EXPECT_NEAR(camera.generate_ray(32, 32, 64, 64, {}, 3.5f).direction.z, -1.0f, 1e-6f);
+    EXPECT_THROW(camera.set_motion({{0.0f, {0, 0, 5}, {0, 0, 0}}}), std::invalid_argument);
+    EXPECT_THROW(camera.set_motion({{1.0f, {0, 0, 5}, {0, 0, 0}}, {1.0f, {1, 0, 5}, {0, 0, 0}}}),
+                 std::invalid_argument);
 }

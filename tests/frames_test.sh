@@ -57,6 +57,19 @@ same f_00.exr t0.exr "frame 0 against --time 0"
 same f_24.exr t1.exr "frame 24 against --time 1"
 idiff -fail 0 -warn 0 f_00.exr f_24.exr >/dev/null && fail "the camera did not move between frames 0 and 24"
 
+# A camera moved by keys at any times: at 1 fps, frame 2 is half-way between the keys at
+# times 1 and 3.
+sed -e '/_end/d' -e '/^position = \[0, 1, 6\]/d' -e 's/^look_at = .*/motion = [\
+  { time = 0, position = [0, 1, 6], look_at = [0, 1, 0] },\
+  { time = 1, position = [4, 1, 6], look_at = [2, 1, 0] },\
+  { time = 3, position = [0, 3, 6], look_at = [0, 1, 0] },\
+]/' moving.toml > keyed.toml
+sed -e '/_end/d' -e 's/^position = \[0, 1, 6\]/position = [2, 2, 6]/' -e 's/^look_at = \[0, 1, 0\]/look_at = [1, 1, 0]/' \
+  moving.toml > keyed_halfway.toml
+"$glint" render keyed.toml --frames 2 --fps 1 -o keyed_#.exr -q || fail "camera keys: $(cat keyed.toml)"
+"$glint" render keyed_halfway.toml -o keyed_halfway.exr -q || fail "keyed halfway render"
+same keyed_2.exr keyed_halfway.exr "frame 2 of a keyed camera against the camera held between its keys"
+
 # 2. Frames already there are skipped (a retried farm task redoes only what is missing);
 # --overwrite renders them again.
 cp f_00.exr f_12.exr

@@ -180,7 +180,8 @@ TEST(MotionBlur, AnObjectThatLightsTheSceneCannotMove) {
 TEST(MotionBlur, AMovingCameraBlursAStaticScene) {
     Scene scene = make_spheres_scene();
     const Film still = render(make_spheres_scene(), WhittedIntegrator(), 2);
-    scene.camera.set_motion(scene.camera.eye() + Vec3(3.0f, 0.0f, 0.0f), Vec3(3.0f, 2.0f, 0.0f));
+    scene.camera.set_motion({{0.0f, scene.camera.eye(), scene.camera.target()},
+                             {1.0f, scene.camera.eye() + Vec3(3.0f, 0.0f, 0.0f), Vec3(3.0f, 2.0f, 0.0f)}});
     ASSERT_TRUE(scene.has_motion());
     EXPECT_FALSE(same_pixels(still, render(std::move(scene), WhittedIntegrator(), 2)));
 }

@@ -162,9 +162,8 @@ void note_shutter(const gltf::NodeAnimation& animation, const std::optional<gltf
 }
 
 /// Cameras and lights are placed where their nodes are at the shutter's open time: a glTF
-/// camera's motion (Camera::set_motion moves on straight lines between scene times 0 and 1,
-/// not along the file's keys) and moving lights (light sampling assumes lights stay put)
-/// are not blurred.
+/// camera's motion (not turned into Camera keys, which move the eye and target on straight
+/// lines) and moving lights (light sampling assumes lights stay put) are not blurred.
 void note_posed_camera_and_lights(const gltf::Document& doc, const gltf::NodeMotion& motion, const GltfReport& report,
                                   ImportNotes& notes) {
     const std::vector<gltf::PlacedNode>& nodes = motion.at_open();

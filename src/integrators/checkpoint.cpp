@@ -52,21 +52,25 @@ RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, co
     }
     // Nine significant digits: a float's value exactly, so any change of the camera shows.
     const Vec3 &e = camera.eye(), &d = camera.forward(), &u = camera.up();
-    f.emplace_back("camera", fmt::format("{} at ({:.9g}, {:.9g}, {:.9g}) looking ({:.9g}, {:.9g}, {:.9g}) up ({:.9g}, "
-                                         "{:.9g}, {:.9g}), {} {:.9g}",
-                                         camera.projection() == Projection::Perspective ? "perspective" : "orthographic",
-                                         e.x, e.y, e.z, d.x, d.y, d.z, u.x, u.y, u.z,
-                                         camera.projection() == Projection::Perspective ? "fov" : "height",
-                                         camera.projection() == Projection::Perspective ? camera.vertical_fov()
-                                                                                        : camera.view_height()));
+    f.emplace_back(
+        "camera",
+        fmt::format("{} at ({:.9g}, {:.9g}, {:.9g}) looking ({:.9g}, {:.9g}, {:.9g}) up ({:.9g}, "
+                    "{:.9g}, {:.9g}), {} {:.9g}",
+                    camera.projection() == Projection::Perspective ? "perspective" : "orthographic", e.x, e.y, e.z, d.x,
+                    d.y, d.z, u.x, u.y, u.z, camera.projection() == Projection::Perspective ? "fov" : "height",
+                    camera.projection() == Projection::Perspective ? camera.vertical_fov() : camera.view_height()));
     const ThinLens& lens = camera.lens();
-    f.emplace_back("lens", fmt::format("aperture {:.9g}, focus {:.9g}, blades {}, rotation {:.9g}", lens.aperture_radius,
-                                       lens.focus_distance, lens.blades, lens.rotation));
+    f.emplace_back("lens", fmt::format("aperture {:.9g}, focus {:.9g}, blades {}, rotation {:.9g}",
+                                       lens.aperture_radius, lens.focus_distance, lens.blades, lens.rotation));
     f.emplace_back("shutter", fmt::format("[{:.9g}, {:.9g}]", camera.shutter().open, camera.shutter().close));
-    if (const auto& end = camera.end_pose())
-        f.emplace_back("camera motion", fmt::format("to ({:.9g}, {:.9g}, {:.9g}) looking at ({:.9g}, {:.9g}, {:.9g})",
-                                                    end->eye.x, end->eye.y, end->eye.z, end->target.x, end->target.y,
-                                                    end->target.z));
+    if (camera.moves()) {
+        std::string keys;
+        for (const Camera::Key& k : camera.motion())
+            keys += fmt::format("{}at {:.9g}: ({:.9g}, {:.9g}, {:.9g}) looking at ({:.9g}, {:.9g}, {:.9g})",
+                                keys.empty() ? "" : "; ", k.time, k.eye.x, k.eye.y, k.eye.z, k.target.x, k.target.y,
+                                k.target.z);
+        f.emplace_back("camera motion", keys);
+    }
     f.emplace_back("width", std::to_string(s.width));
     f.emplace_back("height", std::to_string(s.height));
     f.emplace_back("spp", std::to_string(s.samples_per_axis * s.samples_per_axis));

@@ -2,6 +2,7 @@
 
 #include "glint/math/constants.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -41,21 +42,41 @@ void Camera::set_shutter(const Shutter& shutter) {
     shutter_ = shutter;
 }
 
-void Camera::set_motion(const Vec3& eye_end, const Vec3& target_end) {
-    // The view is a straight-line blend of the two; check it along the way (a pass of the
+void Camera::set_motion(std::vector<Key> keys) {
+    if (keys.size() < 2) throw std::invalid_argument("a camera motion needs two keys or more");
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        if (!std::isfinite(keys[i].time)) throw std::invalid_argument("a camera key's time must be finite");
+        if (i > 0 && !(keys[i].time > keys[i - 1].time))
+            throw std::invalid_argument("camera keys must come in strictly increasing time");
+    }
+    // The view is a straight-line blend between keys; check it along the way (a pass of the
     // eye through the target, or a view along up, shows as a degenerate basis).
     constexpr int kChecks = 64;
-    for (int i = 0; i <= kChecks; ++i) {
-        const float s = float(i) / float(kChecks);
-        (void)make_basis(lerp(s, eye_, eye_end), lerp(s, target_, target_end), up_hint_);
-    }
-    end_ = EndPose{eye_end, target_end};
+    for (std::size_t i = 0; i + 1 < keys.size(); ++i)
+        for (int c = 0; c <= kChecks; ++c) {
+            const float s = float(c) / float(kChecks);
+            (void)make_basis(lerp(s, keys[i].eye, keys[i + 1].eye), lerp(s, keys[i].target, keys[i + 1].target),
+                             up_hint_);
+        }
+    const Basis first = make_basis(keys.front().eye, keys.front().target, up_hint_);
+    eye_ = first.eye;
+    forward_ = first.forward;
+    right_ = first.right;
+    up_ = first.up;
+    target_ = keys.front().target;
+    keys_ = std::move(keys);
 }
 
 Camera::Basis Camera::basis_at(float time) const {
-    if (!end_ || !(time > 0.0f)) return {eye_, forward_, right_, up_};
-    if (time >= 1.0f) return make_basis(end_->eye, end_->target, up_hint_);
-    return make_basis(lerp(time, eye_, end_->eye), lerp(time, target_, end_->target), up_hint_);
+    if (keys_.empty() || !(time > keys_.front().time)) return {eye_, forward_, right_, up_};
+    const Key& last = keys_.back();
+    if (time >= last.time) return make_basis(last.eye, last.target, up_hint_);
+    const auto next =
+        std::upper_bound(keys_.begin(), keys_.end(), time, [](float t, const Key& key) { return t < key.time; });
+    const Key& a = *(next - 1);
+    const Key& b = *next;
+    const float s = (time - a.time) / (b.time - a.time);
+    return make_basis(lerp(s, a.eye, b.eye), lerp(s, a.target, b.target), up_hint_);
 }
 
 Camera Camera::perspective(const Vec3& eye, const Vec3& target, const Vec3& up, float vertical_fov) {

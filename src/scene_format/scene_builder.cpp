@@ -6,8 +6,8 @@
 #include "glint/image/filter.h"
 #include "glint/integrators/integrator_registry.h"
 #include "glint/materials/uv_transform_texture.h"
-#include "glint/scene_format/build_context.h"
 #include "glint/scene/environment.h"
+#include "glint/scene_format/build_context.h"
 #include "glint/scene_format/registry.h"
 
 #include "glint/scene_format/did_you_mean.h"
@@ -165,10 +165,37 @@ Shutter read_shutter(const ParamTable& t) {
     return {times.x, times.y};
 }
 
+/// `[camera] motion = [{ time, position, look_at }, ...]`: two keys or more, in strictly
+/// increasing time.
+std::vector<Camera::Key> read_camera_keys(const ParamTable& t) {
+    const ParamValue& motion = t.require("motion", "an array of { time, position, look_at }");
+    const ParamValue::Array& elements = motion.as_array(t.name_of("motion"));
+    if (elements.size() < 2) motion.fail(t.name_of("motion"), "two keys or more, { time, position, look_at }");
+    std::vector<Camera::Key> keys;
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        const ParamTable& key = elements[i].as_table(ValueName(ValueName(t, "motion"), i));
+        const float time = key.require_number("time");
+        if (!keys.empty() && !(time > keys.back().time))
+            key.fail("time", fmt::format("a time after the previous key's {}", keys.back().time));
+        keys.push_back({time, key.require_vec3("position"), key.require_vec3("look_at")});
+        key.reject_unknown_keys();
+    }
+    return keys;
+}
+
 Camera read_camera(const ParamTable& t) {
     const std::string type = t.choice("type", kProjections, "perspective");
-    const Vec3 position = t.require_vec3("position");
-    const Vec3 look_at = t.require_vec3("look_at");
+    // A camera moved by keys is placed by them: its first key is where it starts.
+    std::vector<Camera::Key> keys;
+    if (t.find("motion")) {
+        for (const std::string_view key : {"position", "look_at", "position_end", "look_at_end"})
+            if (t.find(key))
+                t.fail(key,
+                       "no position, look_at, position_end or look_at_end beside motion (its keys place the camera)");
+        keys = read_camera_keys(t);
+    }
+    const Vec3 position = keys.empty() ? t.require_vec3("position") : keys.front().eye;
+    const Vec3 look_at = keys.empty() ? t.require_vec3("look_at") : keys.front().target;
     const Vec3 up = t.vec3("up", Vec3(0.0f, 1.0f, 0.0f));
     float size = 0.0f;
     if (type == "perspective") {
@@ -198,11 +225,14 @@ Camera read_camera(const ParamTable& t) {
                         "direction",
                         e.what()));
     }
-    if (moves) {
+    if (moves) keys = {{0.0f, position, look_at}, {1.0f, position_end, look_at_end}};
+    if (!keys.empty()) {
         try {
-            camera.set_motion(position_end, look_at_end);
+            camera.set_motion(std::move(keys));
         } catch (const std::invalid_argument& e) {
-            t.fail(t.find("position_end") ? "position_end" : "look_at_end",
+            t.fail(t.find("motion")         ? "motion"
+                   : t.find("position_end") ? "position_end"
+                                            : "look_at_end",
                    fmt::format("a camera motion whose view stays defined ({})", e.what()));
         }
     }

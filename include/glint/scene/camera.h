@@ -7,6 +7,7 @@
 #include "glint/scene/thin_lens.h"
 
 #include <optional>
+#include <vector>
 
 namespace glint {
 
@@ -44,12 +45,21 @@ public:
     [[nodiscard]] const Shutter& shutter() const { return shutter_; }
     /// The time a camera ray takes for `u` in [0, 1): uniform over the shutter interval.
     [[nodiscard]] float time(float u) const { return shutter_.open + u * (shutter_.close - shutter_.open); }
-    /// Move the camera: it is where it was made at time 0 and at `eye_end` looking at
-    /// `target_end` at time 1 (the keys objects use, transform and transform_end), in between
-    /// on straight lines, held before and after. Throws std::invalid_argument if the view
-    /// degenerates on the way (eye meeting target, view direction along up).
-    void set_motion(const Vec3& eye_end, const Vec3& target_end);
-    [[nodiscard]] bool moves() const { return end_.has_value(); }
+    /// Where a moving camera is at one time: its eye and the point it looks at.
+    struct Key {
+        float time = 0.0f;
+        Vec3 eye, target;
+    };
+    /// Move the camera through `keys` (two or more, at strictly increasing finite times): at
+    /// a key's time it is at its eye looking at its target, in between on straight lines,
+    /// and the first and last poses hold before and after. Its pose as made becomes the first
+    /// key's. The keys objects use (transform and transform_end at times 0 and 1, or motion).
+    /// Throws std::invalid_argument for fewer than two keys, times out of order, or a view
+    /// that degenerates on the way (eye meeting target, view direction along up).
+    void set_motion(std::vector<Key> keys);
+    [[nodiscard]] bool moves() const { return !keys_.empty(); }
+    /// The keys of a moving camera; empty for one that stays put.
+    [[nodiscard]] const std::vector<Key>& motion() const { return keys_; }
 
     /// Ray through the film position (x, y) in pixels, (0, 0) = top-left corner of the
     /// image, (width, height) = bottom-right; the aspect ratio is width/height. Directions
@@ -59,7 +69,7 @@ public:
     [[nodiscard]] Ray generate_ray(float x, float y, int width, int height, Vec2 u_lens = {}, float time = 0.0f) const;
     /// Where world point `p` appears on a `width`×`height` film: the (x, y) that
     /// generate_ray() turns into a ray through `p` (for a lens: the ray from the aperture's
-    /// centre; a moving camera's place at time 0); none for a point behind the eye. Used to
+    /// centre; a moving camera's place at its first key); none for a point behind the eye. Used to
     /// draw rays over the image.
     [[nodiscard]] std::optional<Vec2> project(const Vec3& p, int width, int height) const;
 
@@ -71,11 +81,6 @@ public:
     [[nodiscard]] float vertical_fov() const { return vertical_fov_; }
     [[nodiscard]] float view_height() const { return view_height_; }
 
-    /// Where a moving camera is at time 1.
-    struct EndPose {
-        Vec3 eye, target;
-    };
-    [[nodiscard]] const std::optional<EndPose>& end_pose() const { return end_; }
     /// Where the camera looks at time 0 and the up vector it was given.
     [[nodiscard]] const Vec3& target() const { return target_; }
     [[nodiscard]] const Vec3& up_hint() const { return up_hint_; }
@@ -93,7 +98,7 @@ private:
     Projection projection_ = Projection::Perspective;
     Vec3 eye_, forward_, right_, up_;
     Vec3 target_, up_hint_;
-    std::optional<EndPose> end_;
+    std::vector<Key> keys_;
     Shutter shutter_;
     float vertical_fov_ = 52.0f;  // degrees
     float view_height_ = 2.0f;
