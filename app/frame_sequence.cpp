@@ -1,5 +1,7 @@
 #include "frame_sequence.h"
 
+#include "mpi_session.h"
+
 #include "glint/integrators/checkpoint.h"
 
 #include <fmt/core.h>
@@ -21,8 +23,8 @@ int64_t frame_number(std::string_view text, std::string_view whole) {
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0 || value > kMaxFrame)
         throw std::invalid_argument(fmt::format(
-            "--frames: expected frame numbers from 0 to {} as FIRST-LAST, FIRST-LASTxSTEP or N, comma-separated "
-            "(1-120, 0-240x10, 1,5,10-20); got '{}'",
+            "--frames: expected frame numbers from 0 to {} as FIRST-LAST, FIRST-LAST:STEP or N, comma-separated "
+            "(1-120, 0-240:10, 1,5,10-20); got '{}'",
             kMaxFrame, whole));
     return value;
 }
@@ -35,7 +37,8 @@ std::vector<int64_t> parse_frames(std::string_view text) {
     while (start <= text.size()) {
         const std::size_t comma = std::min(text.find(',', start), text.size());
         const std::string_view item = text.substr(start, comma - start);
-        const std::size_t dash = item.find('-'), x = item.find('x');
+        // A step after ':' (Open Job Description's range expressions) or 'x' (Deadline's).
+        const std::size_t dash = item.find('-'), x = item.find_first_of(":x");
         int64_t first = 0, last = 0, step = 1;
         if (dash == std::string_view::npos) {
             first = last = frame_number(item, text);
@@ -81,6 +84,10 @@ int render_frames(const RenderOptions& opt) {
             "(--motion-blur opens the shutter over part of a frame)");
     if (opt.resume)
         throw std::invalid_argument("--frames resumes a frame that has a checkpoint by itself; expected no --resume");
+    if (opt.mpi && opt.mpi->distributed())
+        throw std::invalid_argument(
+            "--frames under mpirun: MPI renders one frame across ranks; give a frame range "
+            "to a farm's job array instead (docs/scale-out.md)");
     const std::string pattern = !opt.output.empty() ? opt.output
                                 : opt.scene_path.empty()
                                     ? std::string("spheres_####.png")

@@ -13,7 +13,8 @@
 
 namespace glint::app {
 
-/// "1-120", "7", "0-240x10" (every 10th), "1,5,10-20": the frames, in the order given, each
+/// "1-120", "7", "0-240:10" or "0-240x10" (every 10th), "1,5,10-20" (Open Job Description's
+/// integer range expressions, which a farm hands a task as its chunk of frames): the frames, in the order given, each
 /// once. Throws std::invalid_argument for anything else, or a range that ends before it starts.
 [[nodiscard]] std::vector<int64_t> parse_frames(std::string_view text);
 

@@ -5,6 +5,7 @@
 #include "display_options.h"
 #include "explain_command.h"
 #include "info_command.h"
+#include "mpi_session.h"
 #include "render_command.h"
 #include "scene_source.h"
 #include "view_command.h"
@@ -15,10 +16,13 @@
 #include <string>
 
 int main(int argc, char** argv) {
+    // Under mpirun every rank runs this program with the same arguments (mpi_session.h).
+    const glint::app::MpiSession mpi(argc, argv);
     CLI::App app{"Glint: a classic Whitted ray tracer"};
     app.require_subcommand(1);
 
     glint::app::RenderOptions render;
+    render.mpi = &mpi;
     CLI::App* render_cmd =
         app.add_subcommand("render", "Render a scene file (or the built-in spheres scene) to an image");
     render_cmd
@@ -42,7 +46,7 @@ int main(int argc, char** argv) {
                            "(tev listens on 127.0.0.1:14158)");
     CLI::Option* frames = render_cmd->add_option(
         "--frames", render.frames,
-        "Render an animation: frames FIRST-LAST, FIRST-LASTxSTEP or N, comma-separated; -o names "
+        "Render an animation: frames FIRST-LAST, FIRST-LAST:STEP or N, comma-separated; -o names "
         "them with a run of # (out_####.exr); frames already there are skipped");
     render_cmd->add_option("--fps", render.fps, "With --frames: frames per second; frame F shows scene time F / fps")
         ->capture_default_str()
@@ -82,18 +86,24 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         // --help is no error; every mistake exits with 1, as errors found later do.
-        return app.exit(e) == 0 ? 0 : 1;
+        const int status = app.exit(e) == 0 ? 0 : 1;
+        // Under mpirun, one rank's mistake ends every rank rather than leaving them waiting.
+        if (status != 0 && mpi.distributed()) mpi.abort("the command line above is refused");
+        return status;
     }
 
+    int status = 0;
     try {
-        if (*render_cmd) return glint::app::run_render(render);
-        if (*info_cmd) return glint::app::run_info(info_path, info_options);
-        if (*assemble_cmd) return glint::app::run_assemble(assemble);
-        if (*explain_cmd) return glint::app::run_explain(explain);
-        if (*view_cmd) return glint::app::run_view(view);
+        if (*render_cmd) status = glint::app::run_render(render);
+        if (*info_cmd) status = glint::app::run_info(info_path, info_options);
+        if (*assemble_cmd) status = glint::app::run_assemble(assemble);
+        if (*explain_cmd) status = glint::app::run_explain(explain);
+        if (*view_cmd) status = glint::app::run_view(view);
     } catch (const std::exception& e) {
+        if (mpi.distributed()) mpi.abort(e.what());
         fmt::print(stderr, "glint: error: {}\n", e.what());
         return 1;
     }
-    return 0;
+    if (status != 0 && mpi.distributed()) mpi.abort(fmt::format("stopped with exit status {}", status));
+    return status;
 }

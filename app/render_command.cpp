@@ -3,6 +3,7 @@
 #include "display_options.h"
 #include "frame_sequence.h"
 #include "interrupt.h"
+#include "mpi_session.h"
 #include "progress_bar.h"
 #include "render_overrides.h"
 #include "timing.h"
@@ -77,6 +78,14 @@ int stopped_before_rendering(const InterruptGuard& interrupt) {
 int run_render(const RenderOptions& opt) { return opt.frames ? render_frames(opt) : render_image(opt); }
 
 int render_image(const RenderOptions& opt) {
+    // Under mpirun, rank 0 leads: it checks the output, shows progress and writes the image.
+    const bool distributed = opt.mpi && opt.mpi->distributed();
+    const bool leader = !distributed || opt.mpi->rank() == 0;
+    const bool quiet = opt.quiet || !leader;
+    if (distributed && (opt.resume || opt.checkpoint_every || opt.display_server))
+        throw std::invalid_argument(
+            "--resume, --checkpoint-every and --display-server are for one process; a "
+            "render across MPI ranks takes none of them");
     // Every mistake on the command line is reported before the scene is loaded.
     glint::RenderSettings checked;
     RenderOverrides early = opt.overrides;
@@ -93,7 +102,7 @@ int render_image(const RenderOptions& opt) {
     if (output.empty())
         output =
             opt.scene_path.empty() ? "spheres.png" : std::filesystem::path(opt.scene_path).stem().string() + ".png";
-    glint::check_output_path(output);
+    if (leader) glint::check_output_path(output);
     check_aov_output(checked, output);
     const std::optional<glint::DisplayAddress> display = display_address(opt);
     // From here on a first Ctrl-C is a request to stop, never a kill that loses the image.
@@ -104,7 +113,7 @@ int render_image(const RenderOptions& opt) {
     SceneSource source = load_scene(opt.scene_path, opt.scene);
     glint::LoadedScene& loaded = source.loaded;
     auto warn = [&](const std::string& w) {
-        if (!opt.quiet) fmt::print(stderr, "warning: {}\n", w);
+        if (!quiet) fmt::print(stderr, "warning: {}\n", w);
     };
     for (const std::string& w : loaded.warnings) warn(w);
 
@@ -128,10 +137,11 @@ int render_image(const RenderOptions& opt) {
     const glint::RenderFingerprint fingerprint = glint::render_fingerprint(opt.scene_path, s, scene.camera());
     if (opt.resume) {
         glint::read_checkpoint(checkpoint, fingerprint, film, tiles, aovs);
-        if (!opt.quiet)
+        if (!quiet)
             fmt::print(stderr, "resuming {}: {} of {} tiles were rendered\n", checkpoint.string(), tiles.done_count(),
                        tiles.count());
     }
+    if (distributed) opt.mpi->check_same_render(fingerprint);
     const std::unique_ptr<glint::Integrator> integrator = glint::make_integrator(s);
     for (const std::string& w : integrator->warnings(scene)) warn(w);
     if (s.threads > glint::max_render_threads())
@@ -158,15 +168,16 @@ int render_image(const RenderOptions& opt) {
 
     std::optional<glint::FilmStream> stream;
     if (display) stream.emplace(*display, output, film, tiles, warn);
-    ProgressBar bar(!opt.quiet && ::isatty(STDERR_FILENO));
-    const glint::RenderStats stats = integrator->render(
-        scene, s, film,
-        [&](uint32_t done, uint32_t total) {
-            bar.update(done, total);
-            save_checkpoint_if_due();
-        },
-        &interrupt.stop(), &tiles, aovs);
+    ProgressBar bar(!quiet && ::isatty(STDERR_FILENO));
+    const glint::Integrator::ProgressCallback progress = [&](uint32_t done, uint32_t total) {
+        bar.update(done, total);
+        save_checkpoint_if_due();
+    };
+    const glint::RenderStats stats =
+        distributed ? opt.mpi->render(*integrator, scene, s, film, aovs, progress, interrupt.stop())
+                    : integrator->render(scene, s, film, progress, &interrupt.stop(), &tiles, aovs);
     bar.finish();
+    if (!leader) return 0;
     if (stream) stream->finish();
 
     const glint::DisplayTransform display_transform =
@@ -200,7 +211,7 @@ int render_image(const RenderOptions& opt) {
     std::error_code ec;
     std::filesystem::remove(checkpoint, ec);  // the image is whole: nothing to resume
 
-    if (opt.quiet) return 0;
+    if (quiet) return 0;
     const double mrays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds * 1e-6 : 0.0;
     std::string spp = fmt::format("{} spp", s.samples_per_axis * s.samples_per_axis);
     if (s.adaptive) {

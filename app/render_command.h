@@ -13,6 +13,8 @@
 
 namespace glint::app {
 
+class MpiSession;
+
 struct RenderOptions {
     std::string scene_path;
     SceneOptions scene;
@@ -36,6 +38,8 @@ struct RenderOptions {
     double motion_blur = 0.0;
     /// Render frames whose image is already there again.
     bool overwrite = false;
+    /// The processes rendering this image together (mpirun); null or of one: this one alone.
+    const MpiSession* mpi = nullptr;
 };
 
 /// Run `glint render`: one image, or with `frames` an animation. Returns the exit status (0,

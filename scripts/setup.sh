@@ -20,6 +20,7 @@ packages=(
   clang libclang-rt-14-dev  # libFuzzer and sanitizers for the fuzz targets (fuzz/)
   libsdl2-dev libimgui-dev xvfb xauth  # glint view, and its tests in a virtual display
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
+  libopenmpi-dev openmpi-bin  # one frame across processes: mpirun -np N glint render (docs/scale-out.md)
 )
 
 missing=()

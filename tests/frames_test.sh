@@ -47,7 +47,7 @@ sed -e '/_end/d' -e 's/^position = \[0, 1, 6\]/position = [2, 1, 6]/' -e 's/^loo
 
 # 1. Frame 12 at 24 fps is scene time 0.5: the camera half-way, bit for bit; frames 0 and 24
 # are the two keys.
-out=$("$glint" render moving.toml --frames 0-24x12 -o f_##.exr) || fail "--frames 0-24x12 failed"
+out=$("$glint" render moving.toml --frames 0-24:12 -o f_##.exr) || fail "--frames 0-24:12 failed"
 echo "$out" | grep -q "3 frames: 3 rendered, 0 already there" || fail "frames summary: $out"
 [ -s f_00.exr ] && [ -s f_12.exr ] && [ -s f_24.exr ] || fail "frames missing: $(ls)"
 "$glint" render halfway.toml -o halfway.exr -q || fail "halfway render"
@@ -128,6 +128,7 @@ refused "--frames: expected frame numbers" --frames 1-10,
 refused "--frames: expected frame numbers" --frames -3
 refused "expected FIRST ≤ LAST and a step of 1 or more in '5-1'" --frames 5-1
 refused "expected FIRST ≤ LAST and a step of 1 or more in '1-10x0'" --frames 1-10x0
+refused "expected FIRST ≤ LAST and a step of 1 or more in '1-10:0'" --frames 1,1-10:0
 refused "--fps: expected a positive number" --frames 1 --fps 0
 refused "--motion-blur: expected the fraction of a frame" --frames 1 --motion-blur 2
 refused "expected no --time or --shutter" --frames 1 --time 0.5

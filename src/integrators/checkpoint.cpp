@@ -1,5 +1,7 @@
 #include "glint/integrators/checkpoint.h"
 
+#include "glint/integrators/tile_pixels.h"
+
 #include "glint/image/filter.h"
 #include "glint/util/byte_stream.h"
 #include "glint/util/move_into_place.h"
@@ -121,16 +123,8 @@ void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint
     std::string done(tiles.count(), '\0');
     for (uint32_t t = 0; t < tiles.count(); ++t) done[t] = tiles.done(t) ? 1 : 0;
     w.raw(done.data(), done.size());
-    const std::span<const FilmPixel> pixels = film.pixels();
-    for (uint32_t t = 0; t < tiles.count(); ++t) {
-        if (!done[t]) continue;
-        const auto [x0, y0, x1, y1] = tiles.bounds(t);
-        for (uint32_t y = y0; y < y1; ++y)
-            w.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
-        if (aovs)
-            for (uint32_t y = y0; y < y1; ++y)
-                w.raw(&aovs->pixels()[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(AovPixel));
-    }
+    for (uint32_t t = 0; t < tiles.count(); ++t)
+        if (done[t]) write_tile_pixels(w, film, aovs, tiles.bounds(t));
     const std::filesystem::path tmp = temporary_checkpoint_path(path);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
@@ -199,16 +193,10 @@ void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint&
         if (r.u32() != film.width() || r.u32() != film.height() || r.u32() != tiles.count()) malformed();
         std::string done(tiles.count(), '\0');
         r.raw(done.data(), done.size());
-        const std::span<FilmPixel> pixels = film.pixels();
         for (uint32_t t = 0; t < tiles.count(); ++t) {
             if (done[t] == 0) continue;
             if (done[t] != 1) malformed();
-            const auto [x0, y0, x1, y1] = tiles.bounds(t);
-            for (uint32_t y = y0; y < y1; ++y)
-                r.raw(&pixels[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(FilmPixel));
-            if (aovs)
-                for (uint32_t y = y0; y < y1; ++y)
-                    r.raw(&aovs->pixels()[std::size_t(y) * film.width() + x0], (x1 - x0) * sizeof(AovPixel));
+            read_tile_pixels(r, film, aovs, tiles.bounds(t));
             tiles.mark_done(t);
         }
         if (!r.at_end()) malformed();

@@ -246,6 +246,20 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
     return stats;
 }
 
+RenderStats Integrator::render_tiles(const RenderScene& scene, const RenderSettings& settings, Film& film,
+                                     std::span<const uint32_t> tiles, AovFilm* aovs) const {
+    // Every other tile counts as done, so render() takes these alone; the crop does not
+    // apply (the caller chose the tiles).
+    TileGrid grid(film.width(), film.height());
+    std::vector<bool> wanted(grid.count(), false);
+    for (const uint32_t t : tiles) wanted.at(t) = true;
+    for (uint32_t t = 0; t < grid.count(); ++t)
+        if (!wanted[t]) grid.mark_done(t);
+    RenderSettings whole = settings;
+    whole.crop.reset();
+    return render(scene, whole, film, {}, nullptr, &grid, aovs);
+}
+
 RenderStats Integrator::render_pass(const RenderScene& scene, const Camera& camera, const RenderSettings& settings,
                                     Film& film, uint32_t index, const std::atomic<bool>* stop) const {
     const uint32_t n = settings.samples_per_axis;

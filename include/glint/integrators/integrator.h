@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,11 @@ public:
     RenderStats render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                        const ProgressCallback& progress = {}, const std::atomic<bool>* stop = nullptr,
                        TileGrid* tiles = nullptr, AovFilm* aovs = nullptr) const;
+
+    /// Render exactly the tiles `tiles` of TileGrid(film.width(), film.height()), whole: the
+    /// unit of work of a distributed render. Their pixels are the ones render() gives them.
+    RenderStats render_tiles(const RenderScene& scene, const RenderSettings& settings, Film& film,
+                             std::span<const uint32_t> tiles, AovFilm* aovs = nullptr) const;
 
     /// Pixel (x, y) of the image `render` makes with these settings: every sample as the
     /// render takes it, and the rays of sample `sample` (of every sample when none is
