@@ -22,6 +22,21 @@ namespace {
 
 constexpr std::string_view kRed = "[[materials]]\nname = \"red\"\n";
 
+// --- Text ------------------------------------------------------------------------------
+
+TEST(TomlSceneText, NonAsciiCharactersWhereWhitespaceMayStandAreText) {
+    // Debian's toml++ took a non-ASCII character there for an unreachable case (undefined
+    // behaviour: toml_scene_loader.cpp says more); the sanitizer build stops at it.
+    const LoadedScene line_ending_backslash = load(
+        "[[materials]]\nname = \"\"\"\\\n\u00a7 red\"\"\"\n"
+        "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"\u00a7 red\"\n");
+    EXPECT_EQ(line_ending_backslash.scene.materials().front().name, "\u00a7 red");
+    const LoadedScene comment_in_array = load(std::string(kRed) +
+                                              "diffuse = [0.1, # a 5\u00d75 grid\n  0.2, 0.3]\n"
+                                              "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n");
+    EXPECT_EQ(comment_in_array.scene.materials().front().name, "red");
+}
+
 // --- Mistakes -------------------------------------------------------------------------
 
 TEST(TomlSceneErrors, MalformedToml) {
