@@ -4,6 +4,7 @@
 
 #include "glint/integrators/tile_pixels.h"
 #include "glint/util/byte_stream.h"
+#include "glint/util/named_values.h"
 
 #include <fmt/core.h>
 #include <mpi.h>
@@ -83,15 +84,6 @@ std::string receive_bytes(const MPI_Status& status) {
     return bytes;
 }
 
-std::vector<uint32_t> tiles_to_render(const TileGrid& grid, const RenderSettings& settings) {
-    std::vector<uint32_t> order;
-    for (uint32_t t = 0; t < grid.count(); ++t) {
-        const TileGrid::Bounds b = grid.bounds(t);
-        if (!settings.crop || settings.crop->overlaps(PixelRect{b.x0, b.y0, b.x1, b.y1})) order.push_back(t);
-    }
-    return order;
-}
-
 }  // namespace
 
 MpiSession::MpiSession(int& argc, char**& argv) {
@@ -119,11 +111,7 @@ void MpiSession::abort(const std::string& message) const {
 void MpiSession::check_same_render(const RenderFingerprint& fingerprint) const {
     if (!distributed()) return;
     ByteWriter w;
-    w.u32(uint32_t(fingerprint.size()));
-    for (const auto& [name, value] : fingerprint) {
-        w.text(name);
-        w.text(value);
-    }
+    write_named_values(w, fingerprint);
     std::string bytes = w.take();
     auto size = uint64_t(bytes.size());
     MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
@@ -131,20 +119,13 @@ void MpiSession::check_same_render(const RenderFingerprint& fingerprint) const {
     MPI_Bcast(bytes.data(), int(size), MPI_BYTE, 0, MPI_COMM_WORLD);
     if (rank_ == 0) return;
     ByteReader r(bytes);
-    RenderFingerprint first;
-    for (uint32_t n = r.u32(), i = 0; i < n; ++i) {
-        std::string name = r.text();
-        first.emplace_back(std::move(name), r.text());
-    }
-    for (const auto& [name, value] : fingerprint) {
-        std::string theirs = "nothing";
-        for (const auto& [first_name, first_value] : first)
-            if (first_name == name) theirs = first_value;
-        if (theirs != value)
-            abort(
-                fmt::format("this rank would render another image than rank 0 ({}: {} on rank 0, {} here); every "
-                            "rank needs the same scene and settings",
-                            name, theirs, value));
+    const auto differences = named_value_differences(read_named_values(r, UINT32_MAX), fingerprint);
+    if (!differences.empty()) {
+        const auto& [name, theirs, ours] = differences.front();
+        abort(
+            fmt::format("this rank would render another image than rank 0 ({}: {} on rank 0, {} here); every "
+                        "rank needs the same scene and settings",
+                        name, theirs, ours));
     }
 }
 
@@ -179,7 +160,7 @@ RenderStats MpiSession::render(const Integrator& integrator, const RenderScene& 
     }
 
     // Rank 0: a thread of its own renders from the queue while this one answers the others.
-    const std::vector<uint32_t> order = tiles_to_render(grid, settings);
+    const std::vector<uint32_t> order = grid.tiles_overlapping(settings.crop);
     const auto total = uint32_t(order.size());
     TileQueue queue(order, size_);
     std::atomic<uint32_t> finished{0};

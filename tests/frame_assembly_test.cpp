@@ -121,5 +121,28 @@ TEST(FrameAssembly, ACroppedRenderRendersOnlyTheTilesTheCropOverlaps) {
         }
 }
 
+TEST(FrameAssembly, RenderTilesRendersTheListedTilesAsAWholeRenderDoes) {
+    const RenderScene scene(make_spheres_scene());
+    RenderSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    Film full(64, 48), part(64, 48);
+    const auto integrator = make_integrator(settings);
+    (void)integrator->render(scene, settings, full);
+    settings.crop = PixelRect{0, 0, 8, 8};  // ignored: the caller chose the tiles
+    const std::vector<uint32_t> tiles{1, 10};  // [16, 32) × [0, 16) and [32, 48) × [32, 48)
+    EXPECT_EQ(integrator->render_tiles(scene, settings, part, tiles).tiles, 2u);
+    for (uint32_t y = 0; y < 48; ++y)
+        for (uint32_t x = 0; x < 64; ++x) {
+            const bool rendered = (x >= 16 && x < 32 && y < 16) || (x >= 32 && x < 48 && y >= 32);
+            ASSERT_EQ(part.samples_at(x, y), rendered ? 1u : 0u) << x << ", " << y;
+            if (rendered) {
+                ASSERT_EQ(part.at(x, y), full.at(x, y)) << x << ", " << y;
+            }
+        }
+    const std::vector<uint32_t> past{12};
+    EXPECT_THROW((void)integrator->render_tiles(scene, settings, part, past), std::out_of_range);
+}
+
 }  // namespace
 }  // namespace glint

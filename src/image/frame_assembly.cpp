@@ -1,6 +1,7 @@
 #include "glint/image/frame_assembly.h"
 
 #include "glint/image/image_io.h"
+#include "glint/util/named_values.h"
 
 #include <fmt/core.h>
 
@@ -30,19 +31,10 @@ std::string channel_list(const Image& image) {
 
 /// The first attribute in which `a` and `b` differ, in words; empty if none.
 std::string attribute_difference(const FramePart& a, const FramePart& b) {
-    const auto value = [](const Image& image, const std::string& name) -> std::string {
-        for (const auto& [key, text] : image.attributes)
-            if (key == name) return text;
-        return "nothing";
-    };
-    std::vector<std::string> names;
-    for (const Image* image : {&a.image, &b.image})
-        for (const auto& [key, text] : image->attributes)
-            if (std::find(names.begin(), names.end(), key) == names.end()) names.push_back(key);
-    for (const std::string& name : names)
-        if (const std::string va = value(a.image, name), vb = value(b.image, name); va != vb)
-            return fmt::format("{}: {} in {}, {} in {}", name, va, a.name, vb, b.name);
-    return {};
+    const auto differences = named_value_differences(a.image.attributes, b.image.attributes);
+    if (differences.empty()) return {};
+    const auto& [name, va, vb] = differences.front();
+    return fmt::format("{}: {} in {}, {} in {}", name, va, a.name, vb, b.name);
 }
 
 }  // namespace

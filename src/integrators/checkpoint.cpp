@@ -111,11 +111,7 @@ void write_checkpoint(const std::filesystem::path& path, const RenderFingerprint
     ByteWriter w;
     w.raw(kMagic, sizeof kMagic);
     w.u32(kVersion);
-    w.u32(uint32_t(fingerprint.size()));
-    for (const auto& [name, value] : fingerprint) {
-        w.text(name);
-        w.text(value);
-    }
+    write_named_values(w, fingerprint);
     w.u32(film.width());
     w.u32(film.height());
     w.u32(tiles.count());
@@ -149,27 +145,15 @@ RenderFingerprint read_fingerprint(ByteReader& r) {
     char magic[sizeof kMagic];
     r.raw(magic, sizeof magic);
     if (std::memcmp(magic, kMagic, sizeof kMagic) != 0 || r.u32() != kVersion) malformed();
-    const uint32_t items = r.u32();
-    if (items > 1024) malformed();
-    RenderFingerprint saved(items);
-    for (auto& [name, value] : saved) {
-        name = r.text();
-        value = r.text();
-    }
-    return saved;
+    return read_named_values(r, 1024);
 }
 
 /// "name: the checkpoint has A, this render B; ..." for each item that differs.
 std::string fingerprint_differences(const RenderFingerprint& saved, const RenderFingerprint& expected) {
     std::string differences;
-    for (const auto& [name, value] : expected) {
-        std::string theirs = "nothing";
-        for (const auto& [saved_name, saved_value] : saved)
-            if (saved_name == name) theirs = saved_value;
-        if (theirs != value)
-            differences += fmt::format("{}{}: the checkpoint has {}, this render {}", differences.empty() ? "" : "; ",
-                                       name, theirs, value);
-    }
+    for (const auto& [name, theirs, ours] : named_value_differences(saved, expected))
+        differences += fmt::format("{}{}: the checkpoint has {}, this render {}", differences.empty() ? "" : "; ", name,
+                                   theirs, ours);
     return differences.empty() ? std::string("its description differs") : differences;
 }
 

@@ -168,24 +168,33 @@ RayTree Integrator::record_sample(const RenderScene& scene, const RenderSettings
 RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& settings, Film& film,
                                const ProgressCallback& progress, const std::atomic<bool>* stop, TileGrid* tiles,
                                AovFilm* aovs) const {
+    TileGrid own_tiles(film.width(), film.height());
+    TileGrid& grid = tiles ? *tiles : own_tiles;
+    if (grid.width() != film.width() || grid.height() != film.height())
+        throw std::invalid_argument("tile grid and film differ in size");
+    return render_listed_tiles(scene, settings, film, grid, grid.tiles_overlapping(settings.crop), progress, stop,
+                               aovs);
+}
+
+RenderStats Integrator::render_tiles(const RenderScene& scene, const RenderSettings& settings, Film& film,
+                                     std::span<const uint32_t> tiles, AovFilm* aovs) const {
+    TileGrid grid(film.width(), film.height());
+    for (const uint32_t t : tiles)
+        if (t >= grid.count()) throw std::out_of_range("render_tiles: a tile past the image");
+    return render_listed_tiles(scene, settings, film, grid, tiles, {}, nullptr, aovs);
+}
+
+RenderStats Integrator::render_listed_tiles(const RenderScene& scene, const RenderSettings& settings, Film& film,
+                                            TileGrid& grid, std::span<const uint32_t> order,
+                                            const ProgressCallback& progress, const std::atomic<bool>* stop,
+                                            AovFilm* aovs) const {
     if (settings.samples_per_axis == 0) throw std::invalid_argument("samples per axis must be at least 1");
     check_adaptive(settings);
     const Filter filter(settings.filter, settings.filter_radius);
     const auto start = std::chrono::steady_clock::now();
     const uint32_t width = film.width(), height = film.height();
-    TileGrid own_tiles(width, height);
-    TileGrid& grid = tiles ? *tiles : own_tiles;
-    if (grid.width() != width || grid.height() != height)
-        throw std::invalid_argument("tile grid and film differ in size");
-    // The tiles to render: all, or those that overlap the crop.
-    std::vector<uint32_t> order;
-    uint32_t already_done = 0;
-    for (uint32_t tile = 0; tile < grid.count(); ++tile) {
-        const TileGrid::Bounds b = grid.bounds(tile);
-        if (settings.crop && !settings.crop->overlaps(PixelRect{b.x0, b.y0, b.x1, b.y1})) continue;
-        order.push_back(tile);
-        already_done += grid.done(tile) ? 1 : 0;
-    }
+    const auto already_done =
+        uint32_t(std::count_if(order.begin(), order.end(), [&](uint32_t t) { return grid.done(t); }));
     const auto tile_count = uint32_t(order.size());
     const uint32_t n = settings.samples_per_axis;
     std::atomic<uint64_t> rays{0};
@@ -244,20 +253,6 @@ RenderStats Integrator::render(const RenderScene& scene, const RenderSettings& s
     stats.tiles = tile_count;
     stats.seconds = seconds_since(start);
     return stats;
-}
-
-RenderStats Integrator::render_tiles(const RenderScene& scene, const RenderSettings& settings, Film& film,
-                                     std::span<const uint32_t> tiles, AovFilm* aovs) const {
-    // Every other tile counts as done, so render() takes these alone; the crop does not
-    // apply (the caller chose the tiles).
-    TileGrid grid(film.width(), film.height());
-    std::vector<bool> wanted(grid.count(), false);
-    for (const uint32_t t : tiles) wanted.at(t) = true;
-    for (uint32_t t = 0; t < grid.count(); ++t)
-        if (!wanted[t]) grid.mark_done(t);
-    RenderSettings whole = settings;
-    whole.crop.reset();
-    return render(scene, whole, film, {}, nullptr, &grid, aovs);
 }
 
 RenderStats Integrator::render_pass(const RenderScene& scene, const Camera& camera, const RenderSettings& settings,

@@ -22,4 +22,13 @@ uint32_t TileGrid::done_count() const {
     return n;
 }
 
+std::vector<uint32_t> TileGrid::tiles_overlapping(const std::optional<PixelRect>& crop) const {
+    std::vector<uint32_t> tiles;
+    for (uint32_t t = 0; t < count(); ++t) {
+        const Bounds b = bounds(t);
+        if (!crop || crop->overlaps(PixelRect{b.x0, b.y0, b.x1, b.y1})) tiles.push_back(t);
+    }
+    return tiles;
+}
+
 }  // namespace glint

@@ -9,6 +9,7 @@
 #include "glint/integrators/render_settings.h"
 #include "glint/integrators/tile_grid.h"
 #include "glint/scene/camera.h"
+#include "glint/util/named_values.h"
 
 #include <filesystem>
 #include <stdexcept>
@@ -26,7 +27,7 @@ public:
 /// What a render is made of, as (name, value) pairs in words: the scene file's name and a
 /// hash of its bytes, and every setting that changes the image. A checkpoint is resumed
 /// only by a render with the same fingerprint.
-using RenderFingerprint = std::vector<std::pair<std::string, std::string>>;
+using RenderFingerprint = NamedValues;
 
 /// `scene_file` empty stands for the built-in scene. `camera` is the one rendered through:
 /// command-line options (--aperture, --focus, --shutter, --time, --camera) change it

@@ -132,6 +132,11 @@ public:
     }
 
 private:
+    /// Render the tiles `order` of `grid` (skipping those it marks done) into `film`; what
+    /// render() and render_tiles() share.
+    RenderStats render_listed_tiles(const RenderScene& scene, const RenderSettings& settings, Film& film,
+                                    TileGrid& grid, std::span<const uint32_t> order, const ProgressCallback& progress,
+                                    const std::atomic<bool>* stop, AovFilm* aovs) const;
     /// With adaptive sampling, the samples pixel (x, y) takes at least, from its tile's first
     /// batches (explain() follows the render's decisions).
     [[nodiscard]] uint32_t adaptive_minimum(const RenderScene& scene, const Camera& camera, const Filter& filter,

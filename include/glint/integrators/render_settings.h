@@ -5,6 +5,7 @@
 
 #include "glint/image/aov.h"
 #include "glint/integrators/adaptive_sampling.h"
+#include "glint/integrators/pixel_rect.h"
 
 #include <cmath>
 #include <cstdint>
@@ -37,16 +38,6 @@ enum class MisHeuristic { Balance, Power };
     if (spp == 0 || n * n != spp) return std::nullopt;
     return n;
 }
-
-/// A rectangle of pixels [x0, x1) × [y0, y1), counted from the top left.
-struct PixelRect {
-    uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-
-    [[nodiscard]] uint32_t width() const { return x1 - x0; }
-    [[nodiscard]] uint32_t height() const { return y1 - y0; }
-    [[nodiscard]] bool overlaps(const PixelRect& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
-    bool operator==(const PixelRect&) const = default;
-};
 
 /// The accepted range of each numeric setting: one set of limits for scene files and the
 /// command line.

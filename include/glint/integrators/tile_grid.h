@@ -2,9 +2,13 @@
 /// \file The tiles a render is cut into, and which of them are finished: an interrupted
 /// render saves exactly the finished ones, and a resumed render skips them.
 
+#include "glint/integrators/pixel_rect.h"
+
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace glint {
 
@@ -30,6 +34,8 @@ public:
     [[nodiscard]] bool done(uint32_t tile) const { return done_[tile].load(std::memory_order_acquire); }
     void mark_done(uint32_t tile) { done_[tile].store(true, std::memory_order_release); }
     [[nodiscard]] uint32_t done_count() const;
+    /// The tiles a render of `crop` takes, in order: those it overlaps, or all without one.
+    [[nodiscard]] std::vector<uint32_t> tiles_overlapping(const std::optional<PixelRect>& crop) const;
 
 private:
     uint32_t width_, height_, tiles_x_, tiles_y_;
