@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -326,6 +327,30 @@ TEST(ShapeAgnostic, BinaryAndWideBvhsAgreeWithBruteForceOverBoxes) {
         EXPECT_EQ(wide_hit, expected);
         EXPECT_EQ(via_binary.tmax, reference.tmax);
         EXPECT_EQ(via_wide.tmax, reference.tmax);
+    }
+}
+
+/// Eight boxes in a row along each octant's diagonal: a closest-hit ray along the row that
+/// hits nothing visits all of them, nearest first (the precomputed per-octant child order).
+TEST(ShapeAgnostic, ClosestHitTraversalVisitsChildrenFrontToBackInEveryOctant) {
+    for (uint32_t octant = 0; octant < 8; ++octant) {
+        const Vec3 d = normalize(Vec3(octant & 1 ? -1.0f : 1.0f, octant & 2 ? -1.0f : 1.0f, octant & 4 ? -1.0f : 1.0f));
+        std::vector<Bounds3> boxes;
+        for (int k = 0; k < 8; ++k) {
+            const Vec3 centre = d * (2.0f * float(k));
+            boxes.emplace_back(centre - Vec3(0.5f), centre + Vec3(0.5f));
+        }
+        std::reverse(boxes.begin(), boxes.end());  // slot order is not distance order
+        WideBvh wide;
+        wide.build(boxes, BvhBuildConfig{.max_leaf_size = 1});
+        ASSERT_EQ(wide.nodes().size(), 1u);
+        std::vector<uint32_t> visited;
+        Ray ray(d * -4.0f, d, 0.0f, 100.0f);
+        EXPECT_FALSE(wide.traverse<false>(ray, [&](uint32_t leaf, Ray&) {
+            visited.push_back(wide.primitive_order()[wide.leaves()[leaf].first]);
+            return false;
+        }));
+        EXPECT_EQ(visited, (std::vector<uint32_t>{7, 6, 5, 4, 3, 2, 1, 0})) << "octant " << octant;
     }
 }
 

@@ -1,5 +1,8 @@
 #include "glint/accel/wide_bvh.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace glint {
 
 namespace {
@@ -57,6 +60,7 @@ public:
                 ++inner;
             }
         }
+        set_child_order(nodes_[index], slots, used);
         const auto first_child = static_cast<uint32_t>(nodes_.size());
         nodes_.resize(nodes_.size() + inner);
         uint32_t next = first_child;
@@ -67,6 +71,28 @@ public:
     }
 
 private:
+    /// For each ray octant, the used slots sorted by how far along the octant's diagonal
+    /// their centres lie (a ray heading that way meets them in about that order), then the
+    /// unused ones.
+    void set_child_order(WideNode& node, const uint32_t* slots, uint32_t used) const {
+        std::fill(std::begin(node.order), std::end(node.order), 0u);
+        for (uint32_t octant = 0; octant < 8; ++octant) {
+            float key[WideNode::kWidth];
+            uint32_t sorted[WideNode::kWidth];
+            for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
+                sorted[i] = i;
+                key[i] = std::numeric_limits<float>::infinity();
+                if (i >= used) continue;
+                const Vec3 centre = binary_.nodes[slots[i]].bounds.center();
+                key[i] = 0.0f;
+                for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre[a] : centre[a];
+            }
+            std::stable_sort(sorted, sorted + WideNode::kWidth,
+                             [&](uint32_t a, uint32_t b) { return key[a] < key[b]; });
+            for (uint32_t k = 0; k < WideNode::kWidth; ++k) node.order[k] |= sorted[k] << (3 * octant);
+        }
+    }
+
     const BinaryBvh& binary_;
     std::vector<WideNode>& nodes_;
     std::vector<WideLeaf>& leaves_;

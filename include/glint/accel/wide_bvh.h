@@ -26,16 +26,23 @@
 
 namespace glint {
 
-/// Eight child boxes as structure of arrays (lo_x, hi_x, lo_y, hi_y, lo_z, hi_z), 224 bytes.
+/// Eight child boxes as structure of arrays (lo_x, hi_x, lo_y, hi_y, lo_z, hi_z), 256 bytes.
 /// A child is an inner node index, or kLeafBit | leaf index. Unused slots hold an empty box
 /// (lo = +inf, hi = -inf), which no ray can enter.
+///
+/// `order` is the front-to-back order of the children for each of the eight ray octants,
+/// precomputed at build time so that traversal permutes instead of sorting (tinybvh's
+/// BVH8_CPU `perm8`; the idea is the octant-ordered traversal of Garanzha and Loop 2010):
+/// bits [3o, 3o + 3) of order[k] are the slot that comes k-th for a ray whose direction has
+/// octant o (bit a of o set when the direction's component a is negative).
 struct alignas(32) WideNode {
     static constexpr uint32_t kWidth = 8;
     static constexpr uint32_t kLeafBit = 0x80000000u;
     float planes[6][kWidth];
     uint32_t child[kWidth];
+    uint32_t order[kWidth];
 };
-static_assert(sizeof(WideNode) == 224);
+static_assert(sizeof(WideNode) == 256);
 
 /// A leaf: `count` entries of primitive_order() starting at `first`.
 struct WideLeaf {
@@ -49,6 +56,8 @@ struct WideLeaf {
 struct WideRay {
     Vec3 inv_dir, origin_inv_dir;
     uint32_t near_plane[3];
+    /// 3 × the direction's octant: the shift that picks its child order from WideNode::order.
+    uint32_t order_shift;
     /// Precomputes the constants for `ray`.
     explicit WideRay(const Ray& ray);
 };
@@ -74,8 +83,9 @@ public:
 
     /// Visit leaves; `intersect_leaf(uint32_t leaf, Ray& ray) -> bool` tests a leaf's
     /// primitives, shrinks ray.tmax on a closer hit and returns true on a hit. Closest-hit
-    /// traversal visits children front to back and skips subtrees behind ray.tmax; with
-    /// AnyHit it stops at the first hit and does not sort. Returns whether anything was hit.
+    /// traversal visits children front to back (in the order precomputed for the ray's
+    /// octant) and skips subtrees behind ray.tmax; with AnyHit it stops at the first hit and
+    /// takes the children in slot order. Returns whether anything was hit.
     /// `prefetch_leaf(uint32_t leaf)` may start loading a leaf's data when its box is hit.
     template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf = NoLeafPrefetch,
               typename Count = NoTraversalCount>
@@ -106,6 +116,10 @@ private:
     template <bool StoreEnter>
     [[nodiscard]] static uint32_t intersect_node(const WideNode& node, const WideRay& r, float tmin, float tmax,
                                                  float* t_enter);
+    /// The same test with the children in the ray octant's front-to-back order: bit k of the
+    /// mask, child[k] and t_enter[k] are the k-th child in that order.
+    [[nodiscard]] static uint32_t intersect_node_ordered(const WideNode& node, const WideRay& r, float tmin, float tmax,
+                                                         uint32_t* child, float* t_enter);
 
     std::vector<WideNode> nodes_;
     std::vector<WideLeaf> leaves_;
@@ -132,6 +146,7 @@ inline WideRay::WideRay(const Ray& ray) {
         origin_inv_dir[a] = ray.origin[a] * inv_dir[a];
         near_plane[a] = 2 * a + (inv_dir[a] < 0.0f ? 1 : 0);
     }
+    order_shift = 3 * ((near_plane[0] & 1) | (near_plane[1] & 1) << 1 | (near_plane[2] & 1) << 2);
 }
 
 /// Boxes are entered up to tmax·(1 + 2^-21) so that rounding in the slab test never culls
@@ -139,10 +154,10 @@ inline WideRay::WideRay(const Ray& ray) {
 /// traversal needs conservative box tests).
 inline constexpr float kWideBoxSlack = 1.0f + 0x1p-21f;
 
-template <bool StoreEnter>
-inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, float tmin, float tmax,
-                                        float* t_enter) {
 #if defined(__AVX2__)
+/// The eight slab tests: the lanes whose boxes the ray enters within [tmin, tmax], and
+/// (in `enter`) where it enters each box.
+inline __m256 wide_slab_test(const WideNode& node, const WideRay& r, float tmin, float tmax, __m256& enter) {
     auto plane_t = [&](int axis, uint32_t plane) {
         return _mm256_fmsub_ps(_mm256_load_ps(node.planes[plane]), _mm256_set1_ps(r.inv_dir[axis]),
                                _mm256_set1_ps(r.origin_inv_dir[axis]));
@@ -150,10 +165,19 @@ inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, 
     const __m256 near_x = plane_t(0, r.near_plane[0]), far_x = plane_t(0, r.near_plane[0] ^ 1);
     const __m256 near_y = plane_t(1, r.near_plane[1]), far_y = plane_t(1, r.near_plane[1] ^ 1);
     const __m256 near_z = plane_t(2, r.near_plane[2]), far_z = plane_t(2, r.near_plane[2] ^ 1);
-    const __m256 enter = _mm256_max_ps(_mm256_max_ps(near_x, near_y), _mm256_max_ps(near_z, _mm256_set1_ps(tmin)));
+    enter = _mm256_max_ps(_mm256_max_ps(near_x, near_y), _mm256_max_ps(near_z, _mm256_set1_ps(tmin)));
     const __m256 exit = _mm256_min_ps(_mm256_min_ps(far_x, far_y), _mm256_min_ps(far_z, _mm256_set1_ps(tmax)));
+    return _mm256_cmp_ps(enter, _mm256_mul_ps(exit, _mm256_set1_ps(kWideBoxSlack)), _CMP_LE_OQ);
+}
+#endif
+
+template <bool StoreEnter>
+inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, float tmin, float tmax,
+                                        float* t_enter) {
+#if defined(__AVX2__)
+    __m256 enter;
+    const __m256 hit = wide_slab_test(node, r, tmin, tmax, enter);
     if constexpr (StoreEnter) _mm256_storeu_ps(t_enter, enter);
-    const __m256 hit = _mm256_cmp_ps(enter, _mm256_mul_ps(exit, _mm256_set1_ps(kWideBoxSlack)), _CMP_LE_OQ);
     return static_cast<uint32_t>(_mm256_movemask_ps(hit));
 #else
     uint32_t mask = 0;
@@ -167,6 +191,34 @@ inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, 
         }
         if constexpr (StoreEnter) t_enter[i] = enter;
         if (enter <= exit * kWideBoxSlack) mask |= 1u << i;
+    }
+    return mask;
+#endif
+}
+
+inline uint32_t WideBvh::intersect_node_ordered(const WideNode& node, const WideRay& r, float tmin, float tmax,
+                                                uint32_t* child, float* t_enter) {
+#if defined(__AVX2__)
+    __m256 enter;
+    const __m256 hit = wide_slab_test(node, r, tmin, tmax, enter);
+    const __m256i order =
+        _mm256_and_si256(_mm256_srlv_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)),
+                                           _mm256_set1_epi32(static_cast<int>(r.order_shift))),
+                         _mm256_set1_epi32(7));
+    _mm256_storeu_ps(t_enter, _mm256_permutevar8x32_ps(enter, order));
+    _mm256_storeu_si256(
+        reinterpret_cast<__m256i*>(child),
+        _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)), order));
+    return static_cast<uint32_t>(_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, order)));
+#else
+    float slot_enter[WideNode::kWidth];
+    const uint32_t slot_mask = intersect_node<true>(node, r, tmin, tmax, slot_enter);
+    uint32_t mask = 0;
+    for (uint32_t k = 0; k < WideNode::kWidth; ++k) {
+        const uint32_t slot = (node.order[k] >> r.order_shift) & 7;
+        child[k] = node.child[slot];
+        t_enter[k] = slot_enter[slot];
+        mask |= ((slot_mask >> slot) & 1) << k;
     }
     return mask;
 #endif
@@ -191,6 +243,7 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
     stack[top++] = {0, ray.tmin};
     bool hit = false;
     alignas(32) float t_enter[WideNode::kWidth];
+    alignas(32) uint32_t child[WideNode::kWidth];
     while (top > 0) {
         const Entry entry = stack[--top];
         if (!AnyHit && entry.t_enter > ray.tmax) continue;  // behind a hit found since the push
@@ -199,61 +252,47 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
         while (!(ref & WideNode::kLeafBit)) {
             const WideNode& node = nodes[ref];
             count.node();
-            uint32_t mask = intersect_node<!AnyHit>(node, r, ray.tmin, ray.tmax, t_enter);
+            if constexpr (AnyHit) {
+                // Shadow rays: any order will do, so the children keep their slots.
+                uint32_t mask = intersect_node<false>(node, r, ray.tmin, ray.tmax, t_enter);
+                if (mask == 0) {
+                    reached_leaf = false;
+                    break;
+                }
+                const auto first = static_cast<uint32_t>(std::countr_zero(mask));
+                for (mask &= mask - 1; mask; mask &= mask - 1)
+                    stack[top++] = {node.child[std::countr_zero(mask)], 0.0f};
+                ref = node.child[first];
+                continue;
+            }
+            uint32_t mask = intersect_node_ordered(node, r, ray.tmin, ray.tmax, child, t_enter);
             if (mask == 0) {
                 reached_leaf = false;
                 break;
             }
-            uint32_t first = static_cast<uint32_t>(std::countr_zero(mask));
+            const auto nearest = static_cast<uint32_t>(std::countr_zero(mask));
             mask &= mask - 1;
             if (mask == 0) {
-                ref = node.child[first];
-                continue;
-            }
-            if constexpr (AnyHit) {
-                // Shadow rays: any order will do, so skip the sorting.
-                for (; mask; mask &= mask - 1) {
-                    const auto i = static_cast<uint32_t>(std::countr_zero(mask));
-                    stack[top++] = {node.child[i], 0.0f};
-                }
-                ref = node.child[first];
+                ref = child[nearest];
                 continue;
             }
             // Several children hit: ask for all their cache lines now, so that the misses of
             // those visited later overlap with the work on the nearest one (as Embree does;
             // measured: it pays for closest-hit rays, not for shadow rays).
-            for (uint32_t m = mask | (1u << first); m; m &= m - 1) {
-                const uint32_t c = node.child[std::countr_zero(m)];
+            for (uint32_t m = mask | (1u << nearest); m; m &= m - 1) {
+                const uint32_t c = child[std::countr_zero(m)];
                 if (c & WideNode::kLeafBit)
                     prefetch_leaf(c & ~WideNode::kLeafBit);
                 else
                     prefetch_lines<sizeof(WideNode)>(&nodes[c]);
             }
-            const auto second = static_cast<uint32_t>(std::countr_zero(mask));
-            mask &= mask - 1;
-            if (mask == 0) {
-                // The common case of two hit children: push the far one, descend the near one.
-                const bool swap = t_enter[second] < t_enter[first];
-                const uint32_t near = swap ? second : first, far = swap ? first : second;
-                stack[top++] = {node.child[far], t_enter[far]};
-                ref = node.child[near];
-                continue;
+            // Push the others far to near (the octant's order approximates the distance
+            // order), descend into the nearest.
+            for (; mask; mask &= ~(1u << (31 - std::countl_zero(mask)))) {
+                const auto k = static_cast<uint32_t>(31 - std::countl_zero(mask));
+                stack[top++] = {child[k], t_enter[k]};
             }
-            // Three or more: push all, insertion-sort them far to near, pop the nearest.
-            const int base = top;
-            stack[top++] = {node.child[first], t_enter[first]};
-            stack[top++] = {node.child[second], t_enter[second]};
-            for (; mask; mask &= mask - 1) {
-                const auto i = static_cast<uint32_t>(std::countr_zero(mask));
-                stack[top++] = {node.child[i], t_enter[i]};
-            }
-            for (int i = base + 1; i < top; ++i) {
-                const Entry e = stack[i];
-                int j = i - 1;
-                for (; j >= base && stack[j].t_enter < e.t_enter; --j) stack[j + 1] = stack[j];
-                stack[j + 1] = e;
-            }
-            ref = stack[--top].ref;
+            ref = child[nearest];
         }
         if (!reached_leaf) continue;
         if (intersect_leaf(ref & ~WideNode::kLeafBit, ray)) {
