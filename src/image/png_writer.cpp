@@ -33,6 +33,11 @@ bool write_rows(std::FILE* out, int width, int height, int color_type, png_bytep
         return false;
     }
     png_init_io(png, out);
+    // One filter (Paeth) instead of libpng's adaptive choice among five per row, and zlib
+    // level 5 instead of 6: on renders the files come out within 2 % of the default's size
+    // and a 640×480 image is written 20 ms sooner (docs/performance.md, "Against POV-Ray").
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
+    png_set_compression_level(png, 5);
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, color_type, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     // The values are sRGB-encoded (image_io.cpp applies the display transform): say so.
