@@ -354,6 +354,22 @@ TEST(ShapeAgnostic, ClosestHitTraversalVisitsChildrenFrontToBackInEveryOctant) {
     }
 }
 
+/// Two hit children are taken by where the ray enters them: here the large box, whose centre
+/// lies farther along the ray than the small one's, is entered first.
+TEST(ShapeAgnostic, TwoHitChildrenAreVisitedByEntryDistance) {
+    const std::vector<Bounds3> boxes{Bounds3(Vec3(2.9f), Vec3(3.1f)), Bounds3(Vec3(0.0f), Vec3(10.0f))};
+    WideBvh wide;
+    wide.build(boxes, BvhBuildConfig{.max_leaf_size = 1});
+    ASSERT_EQ(wide.nodes().size(), 1u);
+    std::vector<uint32_t> visited;
+    Ray ray(Vec3(-1.0f), normalize(Vec3(1.0f)), 0.0f, 100.0f);
+    EXPECT_FALSE(wide.traverse<false>(ray, [&](uint32_t leaf, Ray&) {
+        visited.push_back(wide.primitive_order()[wide.leaves()[leaf].first]);
+        return false;
+    }));
+    EXPECT_EQ(visited, (std::vector<uint32_t>{1, 0}));
+}
+
 TEST(Build, TheTreeDoesNotDependOnTheThreadCount) {
     const MeshData sphere = icosphere(5);  // 20,480 triangles: big enough for parallel tasks
     auto build_with = [&](int threads) {

@@ -209,8 +209,7 @@ bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept, const Count& co
         }
         return false;
     };
-    auto prefetch_leaf = [this](uint32_t leaf) { prefetch_lines<sizeof(TriangleBlock)>(&blocks_[leaf]); };
-    return wide_.traverse<AnyHit>(ray, intersect_leaf, prefetch_leaf, count);
+    return wide_.traverse<AnyHit>(ray, intersect_leaf, count);
 }
 
 }  // namespace glint

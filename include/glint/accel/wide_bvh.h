@@ -17,7 +17,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <vector>
 
 #if defined(__AVX2__)
@@ -62,20 +61,6 @@ struct WideRay {
     explicit WideRay(const Ray& ray);
 };
 
-/// Default for WideBvh::traverse: leaves whose data is not worth prefetching.
-struct NoLeafPrefetch {
-    constexpr void operator()(uint32_t) const {}
-};
-
-/// Starts loading into L1 the cache lines of an object of `Bytes` bytes at `p`, which is
-/// aligned to 32 bytes (so Bytes / 64 + 1 lines at most; one prefetch per line).
-template <std::size_t Bytes>
-inline void prefetch_lines(const void* p) {
-    const char* c = static_cast<const char*>(p);
-    [&]<std::size_t... I>(std::index_sequence<I...>) { (__builtin_prefetch(c + 64 * I, 0, 3), ...); }
-    (std::make_index_sequence<(Bytes + 63) / 64>{});
-}
-
 class WideBvh {
 public:
     /// Builds the binary tree with `config` (in the caller's TBB arena) and collapses it.
@@ -86,11 +71,8 @@ public:
     /// traversal visits children front to back (in the order precomputed for the ray's
     /// octant) and skips subtrees behind ray.tmax; with AnyHit it stops at the first hit and
     /// takes the children in slot order. Returns whether anything was hit.
-    /// `prefetch_leaf(uint32_t leaf)` may start loading a leaf's data when its box is hit.
-    template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf = NoLeafPrefetch,
-              typename Count = NoTraversalCount>
-    bool traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf = {},
-                  const Count& count = {}) const;
+    template <bool AnyHit, typename IntersectLeaf, typename Count = NoTraversalCount>
+    bool traverse(Ray& ray, IntersectLeaf&& intersect_leaf, const Count& count = {}) const;
 
     /// Node 0 is the root; empty when there is nothing to hit.
     [[nodiscard]] std::span<const WideNode> nodes() const { return nodes_; }
@@ -224,9 +206,8 @@ inline uint32_t WideBvh::intersect_node_ordered(const WideNode& node, const Wide
 #endif
 }
 
-template <bool AnyHit, typename IntersectLeaf, typename PrefetchLeaf, typename Count>
-bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& prefetch_leaf,
-                       const Count& count) const {
+template <bool AnyHit, typename IntersectLeaf, typename Count>
+bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, const Count& count) const {
     if (nodes_.empty()) return false;
     const WideRay r(ray);
     const WideNode* const nodes = nodes_.data();
@@ -276,15 +257,14 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, PrefetchLeaf&& 
                 ref = child[nearest];
                 continue;
             }
-            // Several children hit: ask for all their cache lines now, so that the misses of
-            // those visited later overlap with the work on the nearest one (as Embree does;
-            // measured: it pays for closest-hit rays, not for shadow rays).
-            for (uint32_t m = mask | (1u << nearest); m; m &= m - 1) {
-                const uint32_t c = child[std::countr_zero(m)];
-                if (c & WideNode::kLeafBit)
-                    prefetch_leaf(c & ~WideNode::kLeafBit);
-                else
-                    prefetch_lines<sizeof(WideNode)>(&nodes[c]);
+            if ((mask & (mask - 1)) == 0) {
+                // Two children hit (the common case): their entry distances order them exactly.
+                const auto other = static_cast<uint32_t>(std::countr_zero(mask));
+                const bool swap = t_enter[other] < t_enter[nearest];
+                const uint32_t near = swap ? other : nearest, far = swap ? nearest : other;
+                stack[top++] = {child[far], t_enter[far]};
+                ref = child[near];
+                continue;
             }
             // Push the others far to near (the octant's order approximates the distance
             // order), descend into the nearest.
