@@ -84,6 +84,7 @@ Camera Camera::perspective(const Vec3& eye, const Vec3& target, const Vec3& up, 
         throw std::invalid_argument("field of view must be between 0 and 180 degrees");
     Camera c(Projection::Perspective, eye, target, up);
     c.vertical_fov_ = vertical_fov;
+    c.tan_half_fov_ = std::tan(radians(vertical_fov) * 0.5f);
     return c;
 }
 
@@ -116,8 +117,7 @@ Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 u_lens, f
         const float half_h = 0.5f * view_height_;
         origin = b.eye + b.right * (sx * half_h * aspect) + b.up * (sy * half_h);
     } else {
-        const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
-        direction = b.forward + (b.right * (sx * aspect) + b.up * sy) * tan_half;
+        direction = b.forward + (b.right * (sx * aspect) + b.up * sy) * tan_half_fov_;
     }
     if (lens_.is_pinhole())
         return {origin, projection_ == Projection::Orthographic ? b.forward : normalize(direction), 0.0f, kInfinity,
@@ -142,9 +142,8 @@ std::optional<Vec2> Camera::project(const Vec3& p, int width, int height) const 
     } else {
         const float depth = dot(d, forward_);
         if (!(depth > 0.0f)) return std::nullopt;
-        const float tan_half = std::tan(radians(vertical_fov_) * 0.5f);
-        sx = dot(d, right_) / (depth * tan_half * aspect);
-        sy = dot(d, up_) / (depth * tan_half);
+        sx = dot(d, right_) / (depth * tan_half_fov_ * aspect);
+        sy = dot(d, up_) / (depth * tan_half_fov_);
     }
     return Vec2((sx + 1.0f) * 0.5f * float(width), (1.0f - sy) * 0.5f * float(height));
 }
