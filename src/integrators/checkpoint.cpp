@@ -5,14 +5,16 @@
 #include "glint/image/filter.h"
 #include "glint/util/byte_stream.h"
 #include "glint/util/move_into_place.h"
+#include "glint/util/whole_file.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <cstring>
 #include <fstream>
-#include <iterator>
+#include <optional>
 #include <string_view>
+#include <utility>
 
 #include <unistd.h>
 
@@ -35,10 +37,10 @@ uint64_t fnv1a(const std::string& bytes) {
     return h;
 }
 
-std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw CheckpointError(path.string() + ": cannot be read");
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+std::string file_bytes(const std::filesystem::path& path) {
+    std::optional<std::string> bytes = read_whole_file(path);
+    if (!bytes) throw CheckpointError(path.string() + ": cannot be read");
+    return std::move(*bytes);
 }
 
 }  // namespace
@@ -50,7 +52,7 @@ RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, co
         f.emplace_back("scene", "the built-in scene");
     } else {
         f.emplace_back("scene", scene_file.filename().string());
-        f.emplace_back("scene content", fmt::format("{:016x}", fnv1a(read_file(scene_file))));
+        f.emplace_back("scene content", fmt::format("{:016x}", fnv1a(file_bytes(scene_file))));
     }
     // Nine significant digits: a float's value exactly, so any change of the camera shows.
     const Vec3 &e = camera.eye(), &d = camera.forward(), &u = camera.up();
@@ -166,7 +168,7 @@ void read_checkpoint(const std::filesystem::path& path, const RenderFingerprint&
         throw CheckpointError(path.string() +
                               ": no checkpoint to resume (an interrupted render leaves one beside "
                               "its image)");
-    const std::string bytes = read_file(path);
+    const std::string bytes = file_bytes(path);
     try {
         ByteReader r(bytes);
         const RenderFingerprint saved = read_fingerprint(r);

@@ -4,8 +4,9 @@
 #include "glint/scene_format/toml_scene_loader.h"
 
 #include "glint/scene_format/param_table.h"
-#include "glint/scene_format/source_excerpt.h"
 #include "glint/scene_format/scene_builder.h"
+#include "glint/scene_format/source_excerpt.h"
+#include "glint/util/whole_file.h"
 
 // toml++ compiled here, header-only (src/CMakeLists.txt says why), with floats read by
 // std::from_chars (exact, locale-free; GCC 12 has it) and without its writers.
@@ -25,8 +26,6 @@
 #undef TOML_UNREACHABLE
 #define TOML_UNREACHABLE __builtin_unreachable()
 #include <toml++/toml.h>
-
-#include <fstream>
 
 namespace glint {
 
@@ -112,15 +111,11 @@ LoadedScene load_toml_scene_string(std::string_view text, const std::string& sou
 
 LoadedScene load_toml_scene(const std::filesystem::path& path) {
     std::error_code ec;
-    // A directory opens as an empty stream on Linux; it must not load as an empty scene.
     if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path.string() + ": no such scene file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path.string() + ": cannot open the scene file");
-    // Read into one string of the file's size (a stringstream would hold it twice).
-    std::string text(std::filesystem::file_size(path, ec), '\0');
-    if (ec || !in.read(text.data(), std::streamsize(text.size())) || in.peek() != std::ifstream::traits_type::eof())
-        throw SceneError(path.string() + ": cannot read the scene file");
-    return load_toml_scene_string(text, path.string(), path.parent_path());
+    // One string of the file's size (a stringstream would hold it twice).
+    const std::optional<std::string> text = read_whole_file(path);
+    if (!text) throw SceneError(path.string() + ": cannot read the scene file");
+    return load_toml_scene_string(*text, path.string(), path.parent_path());
 }
 
 }  // namespace glint
