@@ -1,0 +1,58 @@
+#include "glint/util/whole_file.h"
+#include "glint/diagnostics.h"
+#include "glint/integrators/checkpoint.h"
+#include "glint/scene_format/toml_scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+class WholeFile : public testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("glint-whole-file-" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+TEST_F(WholeFile, ReadsEveryByteAndNothingOfWhatIsNoFile) {
+    const std::string bytes("a\0b\r\n\xff end", 10);
+    const fs::path file = dir_ / "bytes.bin";
+    std::ofstream(file, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    EXPECT_EQ(read_whole_file(file), bytes);
+    std::ofstream(dir_ / "empty.bin", std::ios::binary).flush();
+    EXPECT_EQ(read_whole_file(dir_ / "empty.bin"), std::string());
+    EXPECT_FALSE(read_whole_file(dir_));
+    EXPECT_FALSE(read_whole_file(dir_ / "absent.toml"));
+}
+
+TEST_F(WholeFile, AFolderOrAMissingFileIsNamedByTheSceneLoaderAndTheCheckpoint) {
+    for (const fs::path& path : {dir_, dir_ / "absent.toml"}) {
+        try {
+            (void)load_toml_scene(path);
+            ADD_FAILURE() << path << " loaded";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()), path.string() + ": no such scene file");
+        }
+        try {
+            (void)render_fingerprint(path, RenderSettings{}, Camera{});
+            ADD_FAILURE() << path << " fingerprinted";
+        } catch (const CheckpointError& e) {
+            EXPECT_EQ(std::string(e.what()), path.string() + ": cannot be read");
+        }
+    }
+}
+
+}  // namespace
+}  // namespace glint
