@@ -4,12 +4,12 @@
 // instancing through the scene's top level, degenerate inputs.
 
 #include "glint/accel/brute_force.h"
-#include "glint/accel/bvh.h"
 #include "glint/accel/triangle_bvh.h"
-#include "glint/geometry/triangle_mesh.h"
+#include "glint/accel/wide_bvh.h"
 #include "glint/assets/mesh_loader.h"
-#include "glint/scene/scene.h"
+#include "glint/geometry/triangle_mesh.h"
 #include "glint/scene/render_scene.h"
+#include "glint/scene/scene.h"
 
 #include <gtest/gtest.h>
 
@@ -230,9 +230,9 @@ TEST(Degenerate, EmptyInputsHitNothing) {
     EXPECT_FALSE(prepared.occluded(ray));
 
     const std::vector<Bounds3> nothing_to_hit(3);  // empty boxes only
-    Bvh bvh;
-    bvh.build(nothing_to_hit);
-    EXPECT_FALSE(bvh.traverse<false>(ray, [](uint32_t, Ray&) { return true; }));
+    WideBvh of_empty_boxes;
+    of_empty_boxes.build(nothing_to_hit);
+    EXPECT_FALSE(of_empty_boxes.traverse<false>(ray, [](uint32_t, Ray&) { return true; }));
     WideBvh wide;
     wide.build({});
     EXPECT_FALSE(wide.traverse<true>(ray, [](uint32_t, Ray&) { return true; }));
@@ -257,11 +257,12 @@ TEST(Degenerate, OnePrimitive) {
     EXPECT_FALSE(mesh.occluded(Ray(Vec3(0.0f), Vec3(0, 0, 1), 0.0f, 1.5f))) << "the triangle is beyond tmax";
     EXPECT_FALSE(mesh.occluded(Ray(Vec3(0.0f), Vec3(0, 0, -1)))) << "behind the origin";
     EXPECT_FALSE(mesh.occluded(Ray(Vec3(0.0f), Vec3(1, 0, 1)))) << "beside the triangle";
-    Bvh bvh;
+    WideBvh one_box;
     const Bounds3 box(Vec3(-1.0f), Vec3(1.0f));
-    bvh.build(std::span(&box, 1));
+    one_box.build(std::span(&box, 1));
     Ray probe(Vec3(0, 0, -5), Vec3(0, 0, 1));
-    EXPECT_TRUE(bvh.traverse<true>(probe, [](uint32_t primitive, Ray&) { return primitive == 0; }));
+    EXPECT_TRUE(one_box.traverse<true>(
+        probe, [&](uint32_t leaf, Ray&) { return one_box.primitive_order()[one_box.leaves()[leaf].first] == 0; }));
 }
 
 /// An alpha texture that is transparent where u < 0.5.
@@ -293,8 +294,8 @@ TEST(AlphaMask, CutOutHitsAreSkippedByEveryQuery) {
     EXPECT_TRUE(mesh.occluded(Ray(Vec3(0.75f, 0.5f, 0.0f), Vec3(0, 0, 1), 0.0f, 1.5f)));
 }
 
-/// Boxes as primitives: the BVHs know only bounds and a leaf callback, so any primitive works.
-TEST(ShapeAgnostic, BinaryAndWideBvhsAgreeWithBruteForceOverBoxes) {
+/// Boxes as primitives: the BVH knows only bounds and a leaf callback, so any primitive works.
+TEST(ShapeAgnostic, WideBvhAgreesWithBruteForceOverBoxes) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> uniform(-10.0f, 10.0f), size(0.05f, 1.5f);
     std::vector<Bounds3> boxes(3000);
@@ -303,8 +304,6 @@ TEST(ShapeAgnostic, BinaryAndWideBvhsAgreeWithBruteForceOverBoxes) {
         b = Bounds3(lo, lo + Vec3(size(rng), size(rng), size(rng)));
     }
     boxes[7] = Bounds3{};  // an empty box is left out
-    Bvh binary;
-    binary.build(boxes);
     WideBvh wide;
     wide.build(boxes);
     auto hit_box = [&](uint32_t i, Ray& ray) {
@@ -315,9 +314,8 @@ TEST(ShapeAgnostic, BinaryAndWideBvhsAgreeWithBruteForceOverBoxes) {
         return true;
     };
     for (const Ray& ray : random_rays(Bounds3(Vec3(-10.0f), Vec3(10.0f)), 2000, 9)) {
-        Ray reference = ray, via_binary = ray, via_wide = ray;
+        Ray reference = ray, via_wide = ray;
         const bool expected = BruteForce(uint32_t(boxes.size())).traverse<false>(reference, hit_box);
-        EXPECT_EQ(binary.traverse<false>(via_binary, hit_box), expected);
         const bool wide_hit = wide.traverse<false>(via_wide, [&](uint32_t leaf, Ray& r) {
             bool any = false;
             const WideLeaf l = wide.leaves()[leaf];
@@ -325,7 +323,6 @@ TEST(ShapeAgnostic, BinaryAndWideBvhsAgreeWithBruteForceOverBoxes) {
             return any;
         });
         EXPECT_EQ(wide_hit, expected);
-        EXPECT_EQ(via_binary.tmax, reference.tmax);
         EXPECT_EQ(via_wide.tmax, reference.tmax);
     }
 }

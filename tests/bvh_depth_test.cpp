@@ -1,9 +1,9 @@
-// The binary BVH's depth bound, which sizes the traversal stacks: a pathological input
-// builds a tree deeper than a small fixed stack would hold, and traversal still visits
-// every primitive. An overflow may go unnoticed in Release; under AddressSanitizer (CI's
-// `loader` label) it fails.
+// The binary BVH's depth bound, which sizes the wide BVH's traversal stack: a pathological
+// input builds a tree deeper than a small fixed stack would hold, and traversal still
+// visits every primitive (the scene's top level is such a tree over arbitrary boxes). An overflow may go unnoticed in
+// Release; under AddressSanitizer (CI's `loader` label) it fails.
 
-#include "glint/accel/bvh.h"
+#include "glint/accel/wide_bvh.h"
 
 #include <gtest/gtest.h>
 
@@ -33,23 +33,22 @@ TEST(BvhDepth, APathologicalTreeStaysWithinTheBoundAndIsFullyTraversed) {
     BvhBuildConfig config;
     config.bin_count = 2;
     config.max_leaf_size = 1;
-    Bvh bvh;
-    bvh.build(boxes, config);
-    const std::vector<BvhNode> nodes(bvh.nodes().begin(), bvh.nodes().end());
-    const int depth = deepest_leaf(nodes, 0, 0);
+    const int depth = deepest_leaf(build_binary_bvh(boxes, config).nodes, 0, 0);
     EXPECT_GT(depth, 64) << "not pathological enough to overflow a 64-entry stack";
     EXPECT_LE(depth, kMaxBinaryBvhDepth);
 
-    // Both children of every node are hit at the same distance, so the traversal pushes one
-    // at every level on its way to the first leaf.
+    // Every child of every node is hit at the same distance, so the traversal pushes the
+    // others at every level on its way to the first leaf.
+    WideBvh wide;
+    wide.build(boxes, config);
     for (const bool any_hit : {false, true}) {
         Ray ray(Vec3(-1.0f, 0.0f, 0.0f), Vec3(1.0f, 0.0f, 0.0f));
         std::size_t visited = 0;
-        auto visit = [&](uint32_t, Ray&) {
-            ++visited;
+        auto visit = [&](uint32_t leaf, Ray&) {
+            visited += wide.leaves()[leaf].count;
             return false;  // no hit: the traversal must go on to every leaf
         };
-        const bool hit = any_hit ? bvh.traverse<true>(ray, visit) : bvh.traverse<false>(ray, visit);
+        const bool hit = any_hit ? wide.traverse<true>(ray, visit) : wide.traverse<false>(ray, visit);
         EXPECT_FALSE(hit);
         EXPECT_EQ(visited, boxes.size()) << (any_hit ? "any hit" : "closest hit");
     }

@@ -40,10 +40,16 @@ RenderScene::RenderScene(Scene description) : scene_(std::move(description)) {
     }
     has_motion_ = scene_.has_motion();
     build_area_lights();
-    // Top level: few, large primitives; one per leaf keeps every object test behind a box test.
+    // Top level: few, large primitives; one per leaf keeps every object test behind a box
+    // test, and the leaf reference becomes the object's index.
     BvhBuildConfig config;
     config.max_leaf_size = 1;
     top_level_.build(boxes, config);
+    const std::vector<WideLeaf> leaves(top_level_.leaves().begin(), top_level_.leaves().end());
+    const std::vector<uint32_t> order(top_level_.primitive_order().begin(), top_level_.primitive_order().end());
+    top_level_.encode_leaves([&](uint32_t leaf) { return order[leaves[leaf].first]; });
+    if (order.size() <= kFewObjects)
+        for (const uint32_t object : order) few_objects_.push_back({boxes[object], object});
 }
 
 RenderScene::RenderScene(RenderScene&&) noexcept = default;
@@ -117,18 +123,35 @@ bool RenderScene::occluded_by_object(uint32_t index, const Ray& ray, DielectricS
     return o.transformed ? o.shape->occluded(o.object_from_world.ray(ray)) : o.shape->occluded(ray);
 }
 
+template <bool AnyHit, class Visit, class Count>
+bool RenderScene::visit_objects(Ray& ray, Visit&& visit, const Count& count) const {
+    if (top_level_.nodes().empty() || few_objects_.empty()) return top_level_.traverse<AnyHit>(ray, visit, count);
+    bool hit = false;
+    const Vec3 inv_dir(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z);
+    for (const auto& [box, object] : few_objects_) {
+        float enter, exit;
+        if (!box.intersect(ray.origin, inv_dir, ray.tmin, ray.tmax, enter, exit)) continue;
+        count.node();  // an entered box counts as the visited node it stands for
+        if (visit(object, ray)) {
+            hit = true;
+            if constexpr (AnyHit) return true;
+        }
+    }
+    return hit;
+}
+
 bool RenderScene::intersect(Ray& ray, Hit& hit) const {
-    return top_level_.traverse<false>(ray, [&](uint32_t object, Ray& r) { return intersect_object(object, r, hit); });
+    return visit_objects<false>(ray, [&](uint32_t object, Ray& r) { return intersect_object(object, r, hit); });
 }
 
 bool RenderScene::occluded(const Ray& ray, DielectricShadows mode) const {
     Ray r = ray;
-    return top_level_.traverse<true>(r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr, mode); });
+    return visit_objects<true>(r, [&](uint32_t object, Ray& rr) { return occluded_by_object(object, rr, mode); });
 }
 
 bool RenderScene::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
     auto counted = [&](const Shape& shape, Ray& r) { return shape.intersect_counted(r, hit, stats); };
-    return top_level_.traverse<false>(
+    return visit_objects<false>(
         ray, [&](uint32_t object, Ray& r) { return intersect_object_with(object, r, hit, counted); },
         TraversalCount{&stats});
 }
@@ -141,7 +164,7 @@ bool RenderScene::occluded_counted(const Ray& ray, DielectricShadows mode, Trave
         if (o.motion) return o.shape->occluded_counted(o.motion->at(rr.time).inverse().ray(rr), stats);
         return o.shape->occluded_counted(o.transformed ? o.object_from_world.ray(rr) : rr, stats);
     };
-    return top_level_.traverse<true>(r, occluded_by, TraversalCount{&stats});
+    return visit_objects<true>(r, occluded_by, TraversalCount{&stats});
 }
 
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {

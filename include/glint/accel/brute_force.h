@@ -7,7 +7,7 @@
 
 namespace glint {
 
-/// Same traversal contract as Bvh::traverse, over primitives 0..count-1 in order.
+/// Same traversal contract as WideBvh::traverse, each primitive 0..count-1 in order a leaf.
 class BruteForce {
 public:
     explicit BruteForce(uint32_t primitive_count) : count_(primitive_count) {}

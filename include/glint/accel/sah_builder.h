@@ -1,8 +1,8 @@
 #pragma once
 /// \file Parallel binned SAH construction of a binary BVH over abstract primitive bounds.
 ///
-/// Both Glint hierarchies start here: the scene's top level (`Bvh`) keeps the binary tree,
-/// the triangle meshes' bottom level (`WideBvh`) collapses it into 8-wide nodes.
+/// Both Glint hierarchies start here: the scene's top level and the triangle meshes' bottom
+/// level collapse the binary tree into 8-wide nodes (`WideBvh`).
 
 #include "glint/math/bounds3.h"
 

@@ -4,8 +4,9 @@
 ///
 /// Built by collapsing a binary SAH tree (build_binary_bvh): each wide node repeatedly opens
 /// its largest-area inner child until it has eight children (Wald et al. 2008, "Getting Rid
-/// of Packets"; Embree's BVH8 collapse works the same way). Like `Bvh`, it never sees a
-/// shape: leaves are numbered, and the caller's callback intersects leaf k.
+/// of Packets"; Embree's BVH8 collapse works the same way). It never sees a shape: leaves are
+/// numbered, and the caller's callback intersects leaf k. Both of Glint's levels are one: the
+/// scene's top level over objects and each triangle mesh's bottom level.
 
 #include "glint/accel/sah_builder.h"
 #include "glint/accel/traversal_count.h"
