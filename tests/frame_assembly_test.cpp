@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <memory>
 #include <utility>
 
 #include <string>
@@ -99,49 +100,53 @@ TEST(FrameAssembly, AnExrKeepsACropsPlaceAndAttributesOtherFormatsThePixels) {
     EXPECT_TRUE(plain.attributes.empty());
 }
 
+/// The spheres scene at 64×48 (16×16 tiles: 4 × 3), rendered whole for comparison.
+struct PartialRenderCase {
+    RenderScene scene{make_spheres_scene()};
+    RenderSettings settings = [] {
+        RenderSettings s;
+        s.width = 64;
+        s.height = 48;
+        return s;
+    }();
+    std::unique_ptr<Integrator> integrator = make_integrator(settings);
+    Film full{64, 48};
+    PartialRenderCase() { (void)integrator->render(scene, settings, full); }
+
+    /// Pixels for which `rendered(x, y)` holds have the whole render's values; the others
+    /// have no sample.
+    template <class Rendered>
+    void expect_only(const Film& part, Rendered&& rendered) const {
+        for (uint32_t y = 0; y < 48; ++y)
+            for (uint32_t x = 0; x < 64; ++x) {
+                ASSERT_EQ(part.samples_at(x, y), rendered(x, y) ? 1u : 0u) << x << ", " << y;
+                if (rendered(x, y)) {
+                    ASSERT_EQ(part.at(x, y), full.at(x, y)) << x << ", " << y;
+                }
+            }
+    }
+};
+
 TEST(FrameAssembly, ACroppedRenderRendersOnlyTheTilesTheCropOverlaps) {
-    const RenderScene scene(make_spheres_scene());
-    RenderSettings settings;
-    settings.width = 64;
-    settings.height = 48;
-    Film full(64, 48), cropped(64, 48);
-    const auto integrator = make_integrator(settings);
-    (void)integrator->render(scene, settings, full);
-    settings.crop = PixelRect{20, 10, 40, 30};  // tiles [16, 48) × [0, 32)
-    const RenderStats stats = integrator->render(scene, settings, cropped);
+    PartialRenderCase c;
+    Film cropped(64, 48);
+    c.settings.crop = PixelRect{20, 10, 40, 30};  // tiles [16, 48) × [0, 32)
+    const RenderStats stats = c.integrator->render(c.scene, c.settings, cropped);
     EXPECT_EQ(stats.tiles, 4u);
     EXPECT_TRUE(stats.complete());
-    for (uint32_t y = 0; y < 48; ++y)
-        for (uint32_t x = 0; x < 64; ++x) {
-            const bool rendered = x >= 16 && x < 48 && y < 32;
-            ASSERT_EQ(cropped.samples_at(x, y), rendered ? 1u : 0u) << x << ", " << y;
-            if (rendered) {
-                ASSERT_EQ(cropped.at(x, y), full.at(x, y)) << x << ", " << y;
-            }
-        }
+    c.expect_only(cropped, [](uint32_t x, uint32_t y) { return x >= 16 && x < 48 && y < 32; });
 }
 
 TEST(FrameAssembly, RenderTilesRendersTheListedTilesAsAWholeRenderDoes) {
-    const RenderScene scene(make_spheres_scene());
-    RenderSettings settings;
-    settings.width = 64;
-    settings.height = 48;
-    Film full(64, 48), part(64, 48);
-    const auto integrator = make_integrator(settings);
-    (void)integrator->render(scene, settings, full);
-    settings.crop = PixelRect{0, 0, 8, 8};  // ignored: the caller chose the tiles
+    PartialRenderCase c;
+    Film part(64, 48);
+    c.settings.crop = PixelRect{0, 0, 8, 8};   // ignored: the caller chose the tiles
     const std::vector<uint32_t> tiles{1, 10};  // [16, 32) × [0, 16) and [32, 48) × [32, 48)
-    EXPECT_EQ(integrator->render_tiles(scene, settings, part, tiles).tiles, 2u);
-    for (uint32_t y = 0; y < 48; ++y)
-        for (uint32_t x = 0; x < 64; ++x) {
-            const bool rendered = (x >= 16 && x < 32 && y < 16) || (x >= 32 && x < 48 && y >= 32);
-            ASSERT_EQ(part.samples_at(x, y), rendered ? 1u : 0u) << x << ", " << y;
-            if (rendered) {
-                ASSERT_EQ(part.at(x, y), full.at(x, y)) << x << ", " << y;
-            }
-        }
+    EXPECT_EQ(c.integrator->render_tiles(c.scene, c.settings, part, tiles).tiles, 2u);
+    c.expect_only(
+        part, [](uint32_t x, uint32_t y) { return (x >= 16 && x < 32 && y < 16) || (x >= 32 && x < 48 && y >= 32); });
     const std::vector<uint32_t> past{12};
-    EXPECT_THROW((void)integrator->render_tiles(scene, settings, part, past), std::out_of_range);
+    EXPECT_THROW((void)c.integrator->render_tiles(c.scene, c.settings, part, past), std::out_of_range);
 }
 
 }  // namespace

@@ -117,7 +117,7 @@ private:
     bool visit_objects(Ray& ray, Visit&& visit, const Count& count = {}) const;
 
     /// Up to this many objects, a loop over them beats the top-level BVH: measured with
-    /// glint-scene-bench, one- and two-object scenes rendered 4-11 % slower through it.
+    /// glint-scene-bench, one- and two-object scenes rendered 4-14 % slower through it.
     static constexpr std::size_t kFewObjects = 4;
 
     Scene scene_;
