@@ -92,4 +92,60 @@ bool EmbreeScene::occluded(const BenchRay& ray) const {
     return r.tfar < 0.0f;
 }
 
+namespace {
+
+/// Embree's eight-lane ray layout filled from `count` rays; `valid` marks the lanes in use.
+void fill_packet(const BenchRay* rays, int count, RTCRay8& r, int* valid) {
+    for (int i = 0; i < 8; ++i) {
+        const BenchRay& b = rays[i < count ? i : 0];
+        valid[i] = i < count ? -1 : 0;
+        r.org_x[i] = b.org[0];
+        r.org_y[i] = b.org[1];
+        r.org_z[i] = b.org[2];
+        r.tnear[i] = b.tnear;
+        r.dir_x[i] = b.dir[0];
+        r.dir_y[i] = b.dir[1];
+        r.dir_z[i] = b.dir[2];
+        r.time[i] = 0.0f;
+        r.tfar[i] = b.tfar;
+        r.mask[i] = 0xffffffffu;
+        r.id[i] = 0;
+        r.flags[i] = 0;
+    }
+}
+
+RTCIntersectContext coherent_context() {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    return context;
+}
+
+}  // namespace
+
+void EmbreeScene::intersect8(const BenchRay* rays, int count, PrimaryHit* out) const {
+    RTCIntersectContext context = coherent_context();
+    alignas(32) int valid[8];
+    RTCRayHit8 rh;
+    fill_packet(rays, count, rh.ray, valid);
+    for (int i = 0; i < 8; ++i) {
+        rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect8(valid, scene_, &context, &rh);
+    for (int i = 0; i < count; ++i)
+        out[i] = rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID ? PrimaryHit{0.0f, UINT32_MAX}
+                                                             : PrimaryHit{rh.ray.tfar[i], rh.hit.primID[i]};
+}
+
+void EmbreeScene::occluded8(const BenchRay* rays, int count, PrimaryHit* out) const {
+    RTCIntersectContext context = coherent_context();
+    alignas(32) int valid[8];
+    RTCRay8 r;
+    fill_packet(rays, count, r, valid);
+    rtcOccluded8(valid, scene_, &context, &r);
+    for (int i = 0; i < count; ++i) out[i] = r.tfar[i] < 0.0f ? PrimaryHit{0.0f, 0} : PrimaryHit{0.0f, UINT32_MAX};
+}
+
 }  // namespace glint::bench

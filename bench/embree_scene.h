@@ -29,6 +29,11 @@ public:
     [[nodiscard]] PrimaryHit intersect(const BenchRay& ray) const;
     /// Any hit (rtcOccluded1).
     [[nodiscard]] bool occluded(const BenchRay& ray) const;
+    /// Closest hits of up to eight rays as one packet (rtcIntersect8, coherent context).
+    void intersect8(const BenchRay* rays, int count, PrimaryHit* out) const;
+    /// Any hits of up to eight rays as one packet (rtcOccluded8, coherent context); an
+    /// occluded ray gets prim 0, a free one UINT32_MAX.
+    void occluded8(const BenchRay* rays, int count, PrimaryHit* out) const;
 
 private:
     static bool monitor(void* self, ssize_t bytes, bool post);

@@ -1,11 +1,14 @@
 /// glint-bench: Glint's mesh BVH next to Embree 3 on the same rays (shared/docs/bench-rays.md).
 /// Prints millions of rays per second for both and their ratio, per mesh, ray set and
 /// thread count (median of --reps runs, the two engines alternating so that load from
-/// other processes hits both alike), and the build time and bytes per triangle.
+/// other processes hits both alike), and the build time and bytes per triangle. The sets
+/// "primary8" and "shadow8" are the same rays traced in packets of eight consecutive rays
+/// (TriangleBvh::intersect_packet/occluded_packet against rtcIntersect8/rtcOccluded8).
 
 #include "bench_rays.h"
 #include "embree_scene.h"
 
+#include "glint/accel/ray_packet.h"
 #include "glint/assets/mesh_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -47,6 +50,26 @@ double run(const std::vector<BenchRay>& rays, int threads, std::vector<PrimaryHi
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
             for (size_t i = r.begin(); i < r.end(); ++i) out[i] = trace(rays[i]);
+        });
+    });
+    return ms_since(start);
+}
+
+/// Traces `rays` in packets of eight consecutive rays (fewer at the end) with
+/// `trace(const BenchRay* first, int count, PrimaryHit* out)` on `threads` threads.
+template <typename TracePacket>
+double run_packets(const std::vector<BenchRay>& rays, int threads, std::vector<PrimaryHit>& out,
+                   TracePacket&& trace) {
+    out.resize(rays.size());
+    const size_t packets = (rays.size() + 7) / 8;
+    tbb::task_arena arena(threads);
+    const auto start = Clock::now();
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, packets, 128), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t p = r.begin(); p < r.end(); ++p) {
+                const size_t first = 8 * p;
+                trace(&rays[first], static_cast<int>(std::min<size_t>(8, rays.size() - first)), &out[first]);
+            }
         });
     });
     return ms_since(start);
@@ -120,9 +143,12 @@ public:
         incoherent_ = std::move(secondary.incoherent);
     }
 
+    /// `set` is a ray set's name, with "8" appended for the same rays in packets of eight.
     Record trace(const std::string& set, int threads) {
-        const std::vector<BenchRay>& rays = set == "primary" ? primary_ : set == "shadow" ? shadow_ : incoherent_;
-        const Query query = set == "shadow" ? Query::Any : Query::Closest;
+        const bool packets = set.back() == '8';
+        const std::string base = packets ? set.substr(0, set.size() - 1) : set;
+        const std::vector<BenchRay>& rays = base == "primary" ? primary_ : base == "shadow" ? shadow_ : incoherent_;
+        const Query query = base == "shadow" ? Query::Any : Query::Closest;
         const Shape& mesh = *glint_;
         auto glint_trace = [&](const BenchRay& b) -> PrimaryHit {
             Ray ray = to_glint(b);
@@ -134,11 +160,33 @@ public:
             if (query == Query::Any) return embree_->occluded(b) ? PrimaryHit{0.0f, 0} : PrimaryHit{0.0f, UINT32_MAX};
             return embree_->intersect(b);
         };
+        const TriangleBvh& bvh = glint_->bvh();
+        auto glint_packet = [&](const BenchRay* b, int count, PrimaryHit* out) {
+            RayPacket packet;
+            for (int i = 0; i < count; ++i) packet.set(static_cast<uint32_t>(i), to_glint(b[i]));
+            if (query == Query::Any) {
+                const uint32_t hits = bvh.occluded_packet(packet);
+                for (int i = 0; i < count; ++i) out[i] = {0.0f, (hits >> i & 1) ? 0u : UINT32_MAX};
+                return;
+            }
+            PacketHits h;
+            const uint32_t hits = bvh.intersect_packet(packet, h);
+            for (int i = 0; i < count; ++i)
+                out[i] = (hits >> i & 1) ? PrimaryHit{h.t[i], h.primitive[i]} : PrimaryHit{0.0f, UINT32_MAX};
+        };
+        auto embree_packet = [&](const BenchRay* b, int count, PrimaryHit* out) {
+            if (query == Query::Any)
+                embree_->occluded8(b, count, out);
+            else
+                embree_->intersect8(b, count, out);
+        };
         std::vector<double> glint_ms, embree_ms;
         std::vector<PrimaryHit> glint_hits, embree_hits;
         for (int rep = 0; rep < reps_; ++rep) {
-            glint_ms.push_back(run(rays, threads, glint_hits, glint_trace));
-            embree_ms.push_back(run(rays, threads, embree_hits, embree_trace));
+            glint_ms.push_back(packets ? run_packets(rays, threads, glint_hits, glint_packet)
+                                       : run(rays, threads, glint_hits, glint_trace));
+            embree_ms.push_back(packets ? run_packets(rays, threads, embree_hits, embree_packet)
+                                        : run(rays, threads, embree_hits, embree_trace));
         }
         const double mrays = double(rays.size()) * 1e-3;
         Record r;
@@ -154,7 +202,9 @@ public:
 
     [[nodiscard]] size_t triangles() const { return data_.indices.size() / 3; }
     [[nodiscard]] size_t ray_count(const std::string& set) const {
-        return set == "primary" ? primary_.size() : set == "shadow" ? shadow_.size() : incoherent_.size();
+        return set.starts_with("primary") ? primary_.size()
+               : set.starts_with("shadow") ? shadow_.size()
+                                           : incoherent_.size();
     }
 
 private:
@@ -189,9 +239,12 @@ int main(int argc, char** argv) {
     CLI::App app{"glint-bench: Glint's BVH next to Embree 3 on the rays of shared/docs/bench-rays.md"};
     std::vector<std::string> meshes;
     std::vector<int> threads;
+    std::vector<std::string> sets;
     int reps = 5;
     bool json = false;
     app.add_option("--mesh", meshes, "Mesh file (repeatable); default: the shared bunny, dragon and Lucy");
+    app.add_option("--rays", sets, "Ray set (repeatable); default: all")
+        ->check(CLI::IsMember({"primary", "shadow", "incoherent", "primary8", "shadow8"}));
     app.add_option("--threads", threads, "Thread count (repeatable); default: 1 and 2")->check(CLI::PositiveNumber);
     app.add_option("--reps", reps, "Repetitions per measurement (the median is reported)")->check(CLI::PositiveNumber);
     app.add_flag("--json", json, "Print one JSON array of records instead of the table");
@@ -202,6 +255,7 @@ int main(int argc, char** argv) {
             meshes.push_back((dir / f).string());
     }
     if (threads.empty()) threads = {1, 2};
+    if (sets.empty()) sets = {"primary", "shadow", "incoherent", "primary8", "shadow8"};
 
     std::vector<Record> records;
     try {
@@ -211,7 +265,7 @@ int main(int argc, char** argv) {
             std::vector<Record> builds;
             for (int t : threads) builds.push_back(bench.build(t));
             bench.make_rays();
-            for (const char* set : {"primary", "shadow", "incoherent"})
+            for (const std::string& set : sets)
                 for (int t : threads) {
                     const Record r = bench.trace(set, t);
                     records.push_back(r);

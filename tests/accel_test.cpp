@@ -11,6 +11,8 @@
 #include "glint/scene/render_scene.h"
 #include "glint/scene/scene.h"
 
+#include "test_rays.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,22 +36,7 @@ bool brute_force_intersect(const TriangleMesh& mesh, Ray& ray, Hit& hit) {
     return all.traverse<false>(ray, [&](uint32_t tri, Ray& r) { return mesh.intersect_triangle(tri, r, hit); });
 }
 
-/// Rays from a sphere around the mesh towards random points of its box, some with a finite tmax.
-std::vector<Ray> random_rays(const Bounds3& box, int count, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    std::normal_distribution<float> normal(0.0f, 1.0f);
-    const float radius = length(box.diagonal());
-    std::vector<Ray> rays;
-    for (int i = 0; i < count; ++i) {
-        const Vec3 target = box.lo + box.diagonal() * Vec3(uniform(rng), uniform(rng), uniform(rng));
-        const Vec3 origin = box.center() + normalize(Vec3(normal(rng), normal(rng), normal(rng))) * radius;
-        const Vec3 dir = normalize(target - origin);
-        const float tmax = i % 3 == 0 ? radius * (0.5f + uniform(rng)) : kInfinity;
-        rays.emplace_back(origin, dir, 0.0f, tmax);
-    }
-    return rays;
-}
+using glint_test::random_rays;
 
 /// BVH and brute force agree on hit/miss, t (1e-6 relative) and the triangle; a different
 /// triangle is only allowed at the same t (a ray through an edge shared by both).
@@ -124,14 +111,7 @@ MeshData icosphere(int levels) {
 TEST(Watertight, RaysThroughEdgesAndVerticesOfAClosedMeshNeverEscape) {
     TriangleMesh mesh(icosphere(3));
     mesh.prepare();
-    const MeshData& m = mesh.data();
-    std::vector<Vec3> targets(m.positions);
-    for (size_t t = 0; t < m.indices.size(); t += 3)
-        for (int k = 0; k < 3; ++k) {
-            const Vec3& a = m.positions[m.indices[t + k]];
-            const Vec3& b = m.positions[m.indices[t + (k + 1) % 3]];
-            for (float s : {0.5f, 0.25f, 1.0f / 3.0f}) targets.push_back(a + (b - a) * s);
-        }
+    const std::vector<Vec3> targets = glint_test::vertices_and_edge_points(mesh.data());
     // From inside (several origins) the closed surface must stop every ray, in both queries.
     int escaped = 0;
     for (const Vec3 origin : {Vec3(0.0f), Vec3(0.1f, -0.2f, 0.05f), Vec3(-0.31f, 0.17f, 0.4f)})

@@ -19,6 +19,8 @@
 #include "glint/scene/default_scene.h"
 #include "glint/scene/render_scene.h"
 
+#include "example_scenes.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -98,14 +100,6 @@ bool updating_references() {
     return v && std::string(v) == "1";
 }
 
-std::vector<std::string> scene_names() {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(kSource / "scenes"))
-        if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 class SceneReference : public testing::TestWithParam<std::string> {};
 
 TEST_P(SceneReference, MatchesReference) {
@@ -128,7 +122,7 @@ TEST_P(SceneReference, MatchesReference) {
     EXPECT_TRUE(matches(d)) << name << ": " << d;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, SceneReference, testing::ValuesIn(scene_names()),
+INSTANTIATE_TEST_SUITE_P(Scenes, SceneReference, testing::ValuesIn(glint_test::example_scene_names(kSource)),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 TEST(ReferenceComparison, DetectsAChangedScene) {

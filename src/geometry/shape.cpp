@@ -4,6 +4,14 @@
 
 namespace glint {
 
+uint32_t Shape::intersect_packet(RayPacket& packet, PacketHits& hits) const {
+    return intersect_lane_by_lane(packet, hits, [&](Ray& ray, Hit& hit) { return intersect(ray, hit); });
+}
+
+uint32_t Shape::occluded_packet(const RayPacket& packet) const {
+    return occluded_lane_by_lane(packet, [&](const Ray& ray) { return occluded(ray); });
+}
+
 std::optional<ShapeSample> Shape::sample_toward(const Vec3& ref, Vec2 u) const {
     std::optional<ShapeSample> s = sample_area(u);
     if (!s) return std::nullopt;

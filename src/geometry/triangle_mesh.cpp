@@ -90,6 +90,16 @@ bool TriangleMesh::occluded(const Ray& ray) const {
                                 [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); });
 }
 
+uint32_t TriangleMesh::intersect_packet(RayPacket& packet, PacketHits& hits) const {
+    if (has_alpha_mask()) return Shape::intersect_packet(packet, hits);
+    return bvh_.intersect_packet(packet, hits);
+}
+
+uint32_t TriangleMesh::occluded_packet(const RayPacket& packet) const {
+    if (has_alpha_mask()) return Shape::occluded_packet(packet);
+    return bvh_.occluded_packet(packet);
+}
+
 bool TriangleMesh::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
     const TraversalCount count{&stats};
     if (!has_alpha_mask()) return bvh_.intersect<false>(ray, hit, AcceptAllHits{}, count);

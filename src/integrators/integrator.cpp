@@ -1,5 +1,6 @@
 #include "glint/integrators/integrator.h"
 
+#include "glint/accel/ray_packet.h"
 #include "glint/image/filter.h"
 #include "glint/scene/render_scene.h"
 
@@ -9,10 +10,12 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace glint {
 
@@ -79,12 +82,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x,
-                                     uint32_t y, uint32_t index, uint32_t width, uint32_t height,
-                                     TraceContext& context) const {
+Ray Integrator::camera_ray(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x, uint32_t y,
+                           uint32_t index, uint32_t width, uint32_t height, TraceContext& context,
+                           CameraSample& sample) const {
     context.sampler.start_pixel_sample(uint64_t(y) * width + x, index);
     const FilterSample fs = filter.sample(context.sampler.pixel_2d());
-    CameraSample sample;
     sample.film_position = Vec2((float(x) + 0.5f) + fs.offset.x, (float(y) + 0.5f) + fs.offset.y);
     sample.filter_weight = fs.weight;
     // The lens takes a sampler dimension only when there is a lens, so that a pinhole
@@ -96,8 +98,45 @@ CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& cam
     const Ray ray =
         camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height), u_lens, time);
     context.cone = camera_ray_cone(camera, height, context.sampler.samples_per_axis());
+    return ray;
+}
+
+CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x,
+                                     uint32_t y, uint32_t index, uint32_t width, uint32_t height,
+                                     TraceContext& context) const {
+    CameraSample sample;
+    const Ray ray = camera_ray(scene, camera, filter, x, y, index, width, height, context, sample);
     sample.radiance = Li(scene, ray, context);
     return sample;
+}
+
+template <class AddSample>
+void Integrator::take_packet_samples(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y,
+                                     uint32_t count, uint32_t index, uint32_t width, uint32_t height,
+                                     std::span<Sampler> samplers, FirstHit* first_hit, uint64_t& rays,
+                                     const AddSample& add) const {
+    std::array<CameraSample, RayPacket::kSize> samples;
+    std::array<Ray, RayPacket::kSize> camera_rays;
+    std::array<RayCone, RayPacket::kSize> cones;
+    RayPacket packet;
+    for (uint32_t k = 0; k < count; ++k) {
+        TraceContext context{samplers[k]};
+        camera_rays[k] = camera_ray(scene, scene.camera(), filter, x + k, y, index, width, height, context, samples[k]);
+        cones[k] = context.cone;
+        packet.set(k, camera_rays[k]);
+    }
+    PacketHits hits;
+    const uint32_t hit_lanes = scene.intersect_packet(packet, hits);
+    for (uint32_t k = 0; k < count; ++k) {
+        TraceContext context{samplers[k]};
+        context.first_hit = first_hit;
+        context.cone = cones[k];
+        if (first_hit) first_hit->hit = false;
+        const Hit hit = hits.hit(k);
+        samples[k].radiance = Li_given_first_hit(scene, camera_rays[k], (hit_lanes >> k & 1) ? &hit : nullptr, context);
+        rays += context.rays;
+        add(x + k, y, samples[k]);
+    }
 }
 
 PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSettings& settings, uint32_t x, uint32_t y,
@@ -215,7 +254,23 @@ RenderStats Integrator::render_listed_tiles(const RenderScene& scene, const Rend
             if (aovs) aovs->add_sample(x, y, first_hit, sample.radiance);
             return sample.radiance;
         };
-        if (!settings.adaptive) {
+        if (!settings.adaptive && takes_first_hits()) {
+            // Eight neighbouring pixels of a row take each sample together: their camera rays
+            // go through the scene as one packet. Each pixel still takes its samples in order,
+            // each lane from its own sampler, so the film is the one the loop below makes.
+            std::vector<Sampler> samplers(RayPacket::kSize, sampler);
+            auto add = [&](uint32_t x, uint32_t y, const CameraSample& sample) {
+                film.add_sample(x, y, sample.radiance, sample.filter_weight);
+                if (aovs) aovs->add_sample(x, y, first_hit, sample.radiance);
+            };
+            for (uint32_t y = y0; y < y1; ++y)
+                for (uint32_t x = x0; x < x1; x += RayPacket::kSize) {
+                    const uint32_t count = std::min(RayPacket::kSize, x1 - x);
+                    for (uint32_t index = 0; index < n * n; ++index)
+                        take_packet_samples(scene, filter, x, y, count, index, width, height, samplers,
+                                            aovs ? &first_hit : nullptr, context.rays, add);
+                }
+        } else if (!settings.adaptive) {
             for (uint32_t y = y0; y < y1; ++y)
                 for (uint32_t x = x0; x < x1; ++x)
                     for (uint32_t index = 0; index < n * n; ++index) (void)add_sample(x, y, index);

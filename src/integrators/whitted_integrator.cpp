@@ -47,6 +47,14 @@ Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceConte
     return trace(scene, ray, 0, IorStack(scene.ambient_ior()), context);
 }
 
+Color WhittedIntegrator::Li_given_first_hit(const RenderScene& scene, const Ray& ray, const Hit* hit,
+                                            TraceContext& context) const {
+    if (context.tree) return Li(scene, ray, context);  // explain records its rays from the start
+    context.glossy_origin.pdf = 0.0f;
+    ++context.rays;
+    return radiance_from_hit<false>(scene, ray, hit, 0, IorStack(scene.ambient_ior()), -1, context);
+}
+
 Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
                                TraceContext& context) const {
     context.glossy_origin.pdf = 0.0f;  // not a glossy sample's ray
@@ -174,14 +182,23 @@ Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uin
     }
     Ray r = ray;
     Hit hit;
-    if (!scene.intersect(r, hit)) {
+    const bool found = scene.intersect(r, hit);
+    return radiance_from_hit<Record>(scene, ray, found ? &hit : nullptr, depth, media, node, context);
+}
+
+template <bool Record>
+Color WhittedIntegrator::radiance_from_hit(const RenderScene& scene, const Ray& ray, const Hit* found, uint32_t depth,
+                                           const IorStack& media, int32_t node, TraceContext& context) const {
+    if (!found) {
         Color background = scene.background().evaluate(ray.direction);
         // A glossy sample that escapes finds what the environment light's samples find too.
         if (context.glossy_origin.pdf > 0.0f) background = glossy_background_weight(scene, ray, context, background);
         if constexpr (Record) context.tree->add_radiance(node, background);
         return background;
     }
-
+    const Hit& hit = *found;
+    Ray r = ray;
+    r.tmax = hit.t;  // as the query left it
     SurfaceInteraction si = scene.interaction(r, hit);
     // The ray's cone where it hit sets the texture footprint; the rays leaving here carry it
     // on, bounced (shade restores it for each).

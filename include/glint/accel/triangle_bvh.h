@@ -11,6 +11,7 @@
 /// SAH counts leaf cost in blocks of four, so few slots are wasted (Embree's Triangle4
 /// leaves store more: the edges and the normal as well).
 
+#include "glint/accel/ray_packet.h"
 #include "glint/accel/wide_bvh.h"
 #include "glint/geometry/hit.h"
 #include "glint/geometry/triangle.h"
@@ -53,6 +54,14 @@ public:
     template <bool AnyHit, typename Filter = AcceptAllHits, typename Count = NoTraversalCount>
     bool intersect(Ray& ray, Hit& hit, Filter&& accept = {}, const Count& count = {}) const;
 
+    /// intersect<false> for the packet's active lanes at once (triangle_bvh_packet.cpp):
+    /// returns the lanes that hit, shrinks their tmax and writes their hits. The same
+    /// watertight arithmetic per lane, so each lane finds the hit a single ray would (at a
+    /// tie between triangles at one t, possibly the other one). No filter, no counting.
+    uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const;
+    /// intersect<true> for the packet's active lanes: returns the lanes that hit anything.
+    [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet) const;
+
     /// True before build() (or after building over no triangles).
     [[nodiscard]] bool empty() const { return blocks_.empty(); }
     /// Box of all triangles.
@@ -79,6 +88,49 @@ inline __m128 opaque_float(__m128 x) {
     __asm__("" : "+x"(x));
     return x;
 }
+#if defined(__AVX__)
+/// The same for eight lanes (the packet test, triangle_bvh_packet.cpp).
+inline __m256 opaque_float(__m256 x) {
+    __asm__("" : "+x"(x));
+    return x;
+}
+#endif
+
+/// a − b·c and a·b + c, rounded one way whatever the optimiser does: fused by explicit
+/// instructions where the CPU has FMA, separately otherwise. The single-ray and the packet
+/// triangle tests use them alike, so that both give every ray the same bits (with
+/// -ffp-contract=fast the compiler would otherwise fuse some products in one and not in the
+/// other, depending on the optimisation level).
+inline __m128 minus_product(__m128 a, __m128 b, __m128 c) {
+#if defined(__FMA__)
+    return _mm_fnmadd_ps(b, c, a);
+#else
+    return _mm_sub_ps(a, opaque_float(_mm_mul_ps(b, c)));
+#endif
+}
+inline __m128 plus_product(__m128 a, __m128 b, __m128 c) {
+#if defined(__FMA__)
+    return _mm_fmadd_ps(a, b, c);
+#else
+    return _mm_add_ps(opaque_float(_mm_mul_ps(a, b)), c);
+#endif
+}
+#if defined(__AVX__)
+inline __m256 minus_product(__m256 a, __m256 b, __m256 c) {
+#if defined(__FMA__)
+    return _mm256_fnmadd_ps(b, c, a);
+#else
+    return _mm256_sub_ps(a, opaque_float(_mm256_mul_ps(b, c)));
+#endif
+}
+inline __m256 plus_product(__m256 a, __m256 b, __m256 c) {
+#if defined(__FMA__)
+    return _mm256_fmadd_ps(a, b, c);
+#else
+    return _mm256_add_ps(opaque_float(_mm256_mul_ps(a, b)), c);
+#endif
+}
+#endif
 
 /// The watertight test's per-ray constants broadcast for four lanes.
 struct BlockRay {
@@ -104,16 +156,17 @@ struct BlockRay {
 };
 #endif
 
-/// intersect_triangle_watertight for four triangles at once, the same arithmetic in the
-/// same order; returns the lanes that hit and writes their t and barycentrics.
+/// intersect_triangle_watertight for four triangles at once, the same steps in the same
+/// order (products fused by minus_product/plus_product where the CPU has FMA); returns the
+/// lanes that hit and writes their t and barycentrics.
 inline uint32_t intersect_block(const TriangleBlock& b, const BlockRay& r, float tmin, float tmax, float* t_out,
                                 float* u_out, float* v_out) {
 #if defined(__SSE2__)
     // Sheared, translated vertices in float, as in the scalar test.
     auto sheared = [&](int vertex, __m128& x, __m128& y, __m128& z) {
         z = _mm_sub_ps(_mm_load_ps(b.v[vertex][r.w.kz]), r.oz);
-        x = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(b.v[vertex][r.w.kx]), r.ox), _mm_mul_ps(r.sx, z));
-        y = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(b.v[vertex][r.w.ky]), r.oy), _mm_mul_ps(r.sy, z));
+        x = minus_product(_mm_sub_ps(_mm_load_ps(b.v[vertex][r.w.kx]), r.ox), r.sx, z);
+        y = minus_product(_mm_sub_ps(_mm_load_ps(b.v[vertex][r.w.ky]), r.oy), r.sy, z);
     };
     __m128 ax, ay, az, bx, by, bz, cx, cy, cz;
     sheared(0, ax, ay, az);
@@ -134,9 +187,8 @@ inline uint32_t intersect_block(const TriangleBlock& b, const BlockRay& r, float
     int mask = ~_mm_movemask_ps(_mm_and_ps(_mm_cmplt_ps(lowest, zero), _mm_cmpgt_ps(highest, zero))) & 0xf;
     if (mask == 0) return 0;
     const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
-    const __m128 t_scaled =
-        _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(r.sz, az)), _mm_mul_ps(v, _mm_mul_ps(r.sz, bz))),
-                   _mm_mul_ps(w, _mm_mul_ps(r.sz, cz)));
+    const __m128 t_scaled = plus_product(
+        w, _mm_mul_ps(r.sz, cz), plus_product(v, _mm_mul_ps(r.sz, bz), _mm_mul_ps(u, _mm_mul_ps(r.sz, az))));
     // Compare t·|det| with the interval scaled by |det| and divide only for hits (the
     // paper's deferred division). det = 0 (zero-area triangles) fails the strict test,
     // unused (NaN) lanes fail every comparison.

@@ -1,6 +1,7 @@
 #pragma once
 /// \file The interface every kind of geometry implements.
 
+#include "glint/accel/ray_packet.h"
 #include "glint/accel/traversal_count.h"
 #include "glint/geometry/hit.h"
 #include "glint/math/bounds3.h"
@@ -45,6 +46,14 @@ public:
 
     /// Any hit with t in [ray.tmin, ray.tmax]: the shadow-ray query, which may stop early.
     [[nodiscard]] virtual bool occluded(const Ray& ray) const = 0;
+
+    /// intersect() and occluded() for the active lanes of a packet (accel/ray_packet.h):
+    /// return the lanes that hit; intersect_packet() shrinks their tmax and fills their
+    /// hits (all but the object). Each lane gets what its ray would get alone (at a tie of
+    /// two primitives at one t, possibly the other). The defaults take the lanes one by
+    /// one; a mesh traces them together.
+    virtual uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const;
+    [[nodiscard]] virtual uint32_t occluded_packet(const RayPacket& packet) const;
 
     /// intersect() and occluded() that also count what they test, for the viewer's heatmaps
     /// (accel/traversal_count.h). An analytic shape is one primitive; a mesh counts its

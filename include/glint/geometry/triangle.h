@@ -55,8 +55,9 @@ struct WatertightRay {
 /// edge compute the same edge function for it, so no ray slips between them; an edge
 /// function that rounds to zero counts as inside, so rays through edges and vertices hit
 /// (possibly both neighbours). Accepts t strictly inside (tmin, tmax), either winding, and
-/// never reports a zero-area triangle (U + V + W = 0). The SIMD leaf test in
-/// triangle_bvh.cpp is the same arithmetic, four triangles at a time.
+/// never reports a zero-area triangle (U + V + W = 0). The SIMD leaf tests in
+/// accel/triangle_bvh.h (four triangles at a time) and triangle_bvh_packet.cpp (eight rays at
+/// a time) take the same steps, with fused multiply-adds where the CPU has them.
 [[nodiscard]] inline bool intersect_triangle_watertight(const Ray& ray, const WatertightRay& w, const Vec3& v0,
                                                         const Vec3& v1, const Vec3& v2, TriangleHit& out) {
     const Vec3 a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;

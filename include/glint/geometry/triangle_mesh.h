@@ -55,6 +55,9 @@ public:
     [[nodiscard]] Bounds3 bounds() const override { return bounds_; }
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
+    /// Packets through the BVH together; with an alpha mask, lane by lane.
+    uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const override;
+    [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet) const override;
     bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
     [[nodiscard]] bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;

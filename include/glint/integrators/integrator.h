@@ -125,6 +125,18 @@ public:
     /// Radiance arriving at the camera along `ray`.
     [[nodiscard]] virtual Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const = 0;
 
+    /// Li() for a camera ray whose first hit the render has already found (`hit`, null for
+    /// a miss), tracing the camera rays of neighbouring pixels as one packet
+    /// (RenderScene::intersect_packet); the same radiance as Li(). An integrator that
+    /// overrides it says so with takes_first_hits(). The default calls Li().
+    [[nodiscard]] virtual Color Li_given_first_hit(const RenderScene& scene, const Ray& ray, const Hit* hit,
+                                                   TraceContext& context) const {
+        (void)hit;
+        return Li(scene, ray, context);
+    }
+    /// Whether the render should trace camera rays in packets for Li_given_first_hit().
+    [[nodiscard]] virtual bool takes_first_hits() const { return false; }
+
     /// One line for each part of `scene` this integrator ignores (shown before rendering).
     [[nodiscard]] virtual std::vector<std::string> warnings(const RenderScene& scene) const {
         (void)scene;
@@ -145,6 +157,17 @@ private:
     /// filter weight and its radiance. The one place both render and explain take samples.
     CameraSample take_sample(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x,
                              uint32_t y, uint32_t index, uint32_t width, uint32_t height, TraceContext& context) const;
+    /// take_sample() up to its camera ray: fills `sample`'s position and filter weight and
+    /// context.cone, and leaves the sampler where Li() takes over.
+    Ray camera_ray(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x, uint32_t y,
+                   uint32_t index, uint32_t width, uint32_t height, TraceContext& context, CameraSample& sample) const;
+    /// take_sample() for sample `index` of the `count` (at most RayPacket::kSize) pixels
+    /// (x, y), (x + 1, y), ..., their camera rays traced as one packet; pixel x + k draws
+    /// from `samplers[k]`. Each sample, with its radiance, goes to `add(x, y, sample)`.
+    template <class AddSample>
+    void take_packet_samples(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y, uint32_t count,
+                             uint32_t index, uint32_t width, uint32_t height, std::span<Sampler> samplers,
+                             FirstHit* first_hit, uint64_t& rays, const AddSample& add) const;
 };
 
 }  // namespace glint

@@ -36,6 +36,10 @@ public:
     [[nodiscard]] static std::unique_ptr<Integrator> create(const RenderSettings& settings);
 
     [[nodiscard]] Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const override;
+    /// Li() from a first hit found by a packet of camera rays.
+    [[nodiscard]] Color Li_given_first_hit(const RenderScene& scene, const Ray& ray, const Hit* hit,
+                                           TraceContext& context) const override;
+    [[nodiscard]] bool takes_first_hits() const override { return true; }
 
     /// Radiance along `ray` at recursion `depth` inside the media of `media`.
     [[nodiscard]] Color trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
@@ -47,6 +51,11 @@ private:
     template <bool Record>
     [[nodiscard]] Color trace_ray(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
                                   TraceContext& context) const;
+    /// trace_ray() from the ray's closest hit (`hit`, null for a miss) on: the background, or
+    /// the shaded hit; `node` is the ray's node in context.tree when recording.
+    template <bool Record>
+    [[nodiscard]] Color radiance_from_hit(const RenderScene& scene, const Ray& ray, const Hit* hit, uint32_t depth,
+                                          const IorStack& media, int32_t node, TraceContext& context) const;
     /// Radiance leaving the hit `si` on `object`, of material `m`, back along `ray`; when
     /// recording, context.node is the ray that hit.
     template <bool Record>

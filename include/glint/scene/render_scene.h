@@ -4,6 +4,7 @@
 /// changed description again. Integrators take nothing else, so nothing can be rendered
 /// unprepared and no change after preparing can be silently ignored.
 
+#include "glint/accel/ray_packet.h"
 #include "glint/accel/wide_bvh.h"
 #include "glint/lights/area_light.h"
 #include "glint/lights/environment_light.h"
@@ -63,6 +64,17 @@ public:
     [[nodiscard]] bool occluded(const Ray& ray) const { return occluded(ray, scene_.dielectric_shadows); }
     /// Any hit that blocks light, with dielectrics treated as `mode` says.
     [[nodiscard]] bool occluded(const Ray& ray, DielectricShadows mode) const;
+    /// intersect() and occluded() for the active lanes of a packet of rays
+    /// (accel/ray_packet.h): return the lanes that hit; intersect_packet() shrinks their tmax
+    /// and fills their hits, object included. Each lane gets what intersect() or occluded()
+    /// would give its ray (at a tie of two surfaces at one t, possibly the other). Coherent
+    /// packets (neighbouring camera rays, shadow rays toward one light) trace faster together
+    /// than one by one (render_scene_packets.cpp).
+    uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const;
+    [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet) const {
+        return occluded_packet(packet, scene_.dielectric_shadows);
+    }
+    [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet, DielectricShadows mode) const;
     /// intersect() and occluded() that also count the nodes and primitives they test (the
     /// viewer's heatmaps); same results.
     bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const;
@@ -115,6 +127,14 @@ private:
     /// reports a hit.
     template <bool AnyHit, class Visit, class Count = NoTraversalCount>
     bool visit_objects(Ray& ray, Visit&& visit, const Count& count = {}) const;
+    /// The packet queries' parts for one object, for the lanes in `lanes`.
+    uint32_t intersect_object_packet(uint32_t object, RayPacket& packet, uint32_t lanes, PacketHits& hits) const;
+    [[nodiscard]] uint32_t occluded_by_object_packet(uint32_t object, const RayPacket& packet, uint32_t lanes,
+                                                     DielectricShadows mode) const;
+    /// visit_objects() for a packet: `visit(object, packet, lanes) -> uint32_t` (the lanes
+    /// it hit) for the objects some lane may hit; with AnyHit a lane that has hit stops.
+    template <bool AnyHit, class Visit>
+    uint32_t visit_objects_packet(RayPacket& packet, Visit&& visit) const;
 
     /// Up to this many objects, a loop over them beats the top-level BVH: measured with
     /// glint-scene-bench, one- and two-object scenes rendered 4-14 % slower through it.

@@ -1,0 +1,200 @@
+/// Packet queries of the mesh BVH: the watertight triangle test run for eight rays at once
+/// against each triangle of a leaf block, under traverse_packet. Without AVX2 the lanes are
+/// traced one by one.
+
+#include "glint/accel/triangle_bvh.h"
+#include "glint/accel/wide_packet_traversal.h"
+
+#include <bit>
+
+namespace glint {
+
+#if defined(__AVX2__)
+
+namespace {
+
+/// WatertightRay for each lane: the permuted origin (roles x, y, z are the lane's kx, ky,
+/// kz), the shear, and for each role whether its axis is 0 or 1 (else 2), as lane masks.
+struct PacketWatertightRay {
+    __m256 origin[3], shear[3];
+    __m256 axis_is_0[3], axis_is_1[3];
+    __m256 tmin;
+    /// Whether all active lanes have the same kx, ky, kz (rays of a coherent packet
+    /// nearly always do), and those of the first: then a vertex needs no per-lane selection.
+    bool shared_axes = true;
+    int axis[3] = {0, 1, 2};
+
+    /// WatertightRay's choices and arithmetic, eight lanes at a time: kz is the axis of
+    /// the largest |direction| component (max_axis's tie rules), kx and ky follow it
+    /// cyclically and swap when the direction along kz is negative.
+    explicit PacketWatertightRay(const RayPacket& packet) {
+        const __m256 sign = _mm256_set1_ps(-0.0f);
+        const __m256 d[3] = {_mm256_load_ps(packet.direction[0]), _mm256_load_ps(packet.direction[1]),
+                             _mm256_load_ps(packet.direction[2])};
+        const __m256 ax = _mm256_andnot_ps(sign, d[0]), ay = _mm256_andnot_ps(sign, d[1]),
+                     az = _mm256_andnot_ps(sign, d[2]);
+        const __m256 x_over_y = _mm256_cmp_ps(ax, ay, _CMP_GT_OQ);
+        const __m256 kz_is_0 = _mm256_and_ps(x_over_y, _mm256_cmp_ps(ax, az, _CMP_GT_OQ));
+        const __m256 kz_is_1 = _mm256_andnot_ps(x_over_y, _mm256_cmp_ps(ay, az, _CMP_GT_OQ));
+        const __m256 kz_is_2 = _mm256_andnot_ps(_mm256_or_ps(kz_is_0, kz_is_1), _mm256_castsi256_ps(_mm256_set1_epi32(-1)));
+        axis_is_0[2] = kz_is_0;
+        axis_is_1[2] = kz_is_1;
+        const __m256 dz = pick_lanes(2, d);
+        const __m256 flip = _mm256_cmp_ps(dz, _mm256_setzero_ps(), _CMP_LT_OQ);
+        // Without the flip kx = kz + 1 and ky = kz + 2 (mod 3).
+        axis_is_0[0] = _mm256_blendv_ps(kz_is_2, kz_is_1, flip);
+        axis_is_1[0] = _mm256_blendv_ps(kz_is_0, kz_is_2, flip);
+        axis_is_0[1] = _mm256_blendv_ps(kz_is_1, kz_is_2, flip);
+        axis_is_1[1] = _mm256_blendv_ps(kz_is_2, kz_is_0, flip);
+        shear[2] = _mm256_div_ps(_mm256_set1_ps(1.0f), dz);
+        shear[0] = _mm256_mul_ps(pick_lanes(0, d), shear[2]);
+        shear[1] = _mm256_mul_ps(pick_lanes(1, d), shear[2]);
+        const __m256 o[3] = {_mm256_load_ps(packet.origin[0]), _mm256_load_ps(packet.origin[1]),
+                             _mm256_load_ps(packet.origin[2])};
+        for (int role = 0; role < 3; ++role) origin[role] = pick_lanes(role, o);
+        tmin = _mm256_load_ps(packet.tmin);
+        const auto active = static_cast<int>(packet.active);
+        const int first = active & -active;
+        for (int role = 0; role < 3; ++role) {
+            const int is0 = _mm256_movemask_ps(axis_is_0[role]) & active;
+            const int is1 = _mm256_movemask_ps(axis_is_1[role]) & active;
+            if ((is0 != 0 && is0 != active) || (is1 != 0 && is1 != active)) shared_axes = false;
+            axis[role] = (is0 & first) ? 0 : (is1 & first) ? 1 : 2;
+        }
+    }
+
+    /// The component of `v` (one vector per axis) that plays `role` in each lane.
+    [[nodiscard]] __m256 pick_lanes(int role, const __m256* v) const {
+        return _mm256_blendv_ps(_mm256_blendv_ps(v[2], v[1], axis_is_1[role]), v[0], axis_is_0[role]);
+    }
+
+    /// The coordinate that plays `role` in each lane of the vertex whose x is at `p` (in a
+    /// TriangleBlock, where its y and z follow at a stride of the block's width).
+    template <bool SharedAxes>
+    [[nodiscard]] __m256 pick(int role, const float* p) const {
+        constexpr int kStride = TriangleBlock::kWidth;
+        if constexpr (SharedAxes) return _mm256_broadcast_ss(&p[kStride * axis[role]]);
+        return _mm256_blendv_ps(
+            _mm256_blendv_ps(_mm256_broadcast_ss(&p[2 * kStride]), _mm256_broadcast_ss(&p[kStride]), axis_is_1[role]),
+            _mm256_broadcast_ss(&p[0]), axis_is_0[role]);
+    }
+};
+
+/// intersect_triangle_watertight of triangle `triangle` of `block` against the packet's eight
+/// rays, the same arithmetic in the same order as intersect_block (explicit fused products
+/// included, so both give a ray the same bits at any optimisation level); returns the lanes
+/// (rays) that hit within (tmin, tmax) and, through the out-parameters, t and the
+/// barycentrics of vertices 1 and 2 for them.
+template <bool SharedAxes>
+uint32_t intersect_triangle_packet(const TriangleBlock& block, uint32_t triangle, const PacketWatertightRay& r,
+                                   __m256 tmax, __m256& t_out, __m256& u_out, __m256& v_out) {
+    auto sheared = [&](int vertex, __m256& x, __m256& y, __m256& z) {
+        const float* p = &block.v[vertex][0][triangle];
+        z = _mm256_sub_ps(r.pick<SharedAxes>(2, p), r.origin[2]);
+        x = detail::minus_product(_mm256_sub_ps(r.pick<SharedAxes>(0, p), r.origin[0]), r.shear[0], z);
+        y = detail::minus_product(_mm256_sub_ps(r.pick<SharedAxes>(1, p), r.origin[1]), r.shear[1], z);
+    };
+    __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
+    sheared(0, ax, ay, az);
+    sheared(1, bx, by, bz);
+    sheared(2, cx, cy, cz);
+    auto edge = [](__m256 px, __m256 py, __m256 qx, __m256 qy) {
+        return _mm256_sub_ps(detail::opaque_float(_mm256_mul_ps(px, qy)), detail::opaque_float(_mm256_mul_ps(py, qx)));
+    };
+    const __m256 u = edge(cx, cy, bx, by);
+    const __m256 v = edge(ax, ay, cx, cy);
+    const __m256 w = edge(bx, by, ax, ay);
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 lowest = _mm256_min_ps(_mm256_min_ps(u, v), w), highest = _mm256_max_ps(_mm256_max_ps(u, v), w);
+    uint32_t mask = ~static_cast<uint32_t>(_mm256_movemask_ps(
+                        _mm256_and_ps(_mm256_cmp_ps(lowest, zero, _CMP_LT_OQ), _mm256_cmp_ps(highest, zero, _CMP_GT_OQ)))) &
+                    RayPacket::kAllLanes;
+    if (mask == 0) return 0;
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(u, v), w);
+    const __m256 sz = r.shear[2];
+    const __m256 t_scaled =
+        detail::plus_product(w, _mm256_mul_ps(sz, cz),
+                             detail::plus_product(v, _mm256_mul_ps(sz, bz), _mm256_mul_ps(u, _mm256_mul_ps(sz, az))));
+    const __m256 sign_mask = _mm256_set1_ps(-0.0f);
+    const __m256 abs_det = _mm256_andnot_ps(sign_mask, det);
+    const __m256 t_abs = _mm256_xor_ps(t_scaled, _mm256_and_ps(det, sign_mask));
+    const __m256 in_range = _mm256_and_ps(_mm256_cmp_ps(t_abs, _mm256_mul_ps(abs_det, r.tmin), _CMP_GT_OQ),
+                                          _mm256_cmp_ps(t_abs, _mm256_mul_ps(abs_det, tmax), _CMP_LT_OQ));
+    mask &= static_cast<uint32_t>(_mm256_movemask_ps(_mm256_and_ps(in_range, _mm256_cmp_ps(abs_det, zero, _CMP_GT_OQ))));
+    if (mask == 0) return 0;
+    const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
+    t_out = _mm256_mul_ps(t_scaled, inv_det);
+    u_out = _mm256_mul_ps(v, inv_det);
+    v_out = _mm256_mul_ps(w, inv_det);
+    return mask;
+}
+
+/// The block's triangles against the packet's `lanes`. Closest hit: each hit shrinks its
+/// lane's tmax and is written to `hits`, so a later triangle must be nearer to count.
+template <bool AnyHit, bool SharedAxes>
+uint32_t intersect_block_packet(const TriangleBlock& block, const PacketWatertightRay& r, RayPacket& packet,
+                                uint32_t lanes, PacketHits* hits) {
+    uint32_t hit_lanes = 0;
+    for (uint32_t lane = 0; lane < TriangleBlock::kWidth && block.triangle[lane] != kNoHit; ++lane) {
+        __m256 t, u, v;
+        const uint32_t hit =
+            intersect_triangle_packet<SharedAxes>(block, lane, r, _mm256_load_ps(packet.tmax), t, u, v) & lanes;
+        if (hit == 0) continue;
+        hit_lanes |= hit;
+        if constexpr (AnyHit) {
+            lanes &= ~hit;
+            if (lanes == 0) break;
+        } else {
+            const __m256i m = _mm256_castps_si256(detail::lane_vector(hit));
+            _mm256_maskstore_ps(packet.tmax, m, t);
+            _mm256_maskstore_ps(hits->t, m, t);
+            _mm256_maskstore_ps(hits->u, m, u);
+            _mm256_maskstore_ps(hits->v, m, v);
+            _mm256_maskstore_epi32(reinterpret_cast<int*>(hits->primitive), m,
+                                   _mm256_set1_epi32(static_cast<int>(block.triangle[lane])));
+        }
+    }
+    return hit_lanes;
+}
+
+template <bool AnyHit>
+uint32_t trace_packet(const WideBvh& bvh, std::span<const TriangleBlock> blocks, RayPacket& packet,
+                      PacketHits* hits) {
+    const PacketWatertightRay r(packet);
+    if (r.shared_axes)
+        return traverse_packet<AnyHit>(bvh.nodes(), packet, [&](uint32_t leaf, RayPacket& p, uint32_t lanes) {
+            return intersect_block_packet<AnyHit, true>(blocks[leaf], r, p, lanes, hits);
+        });
+    return traverse_packet<AnyHit>(bvh.nodes(), packet, [&](uint32_t leaf, RayPacket& p, uint32_t lanes) {
+        return intersect_block_packet<AnyHit, false>(blocks[leaf], r, p, lanes, hits);
+    });
+}
+
+}  // namespace
+
+uint32_t TriangleBvh::intersect_packet(RayPacket& packet, PacketHits& hits) const {
+    return trace_packet<false>(wide_, blocks_, packet, &hits);
+}
+
+uint32_t TriangleBvh::occluded_packet(const RayPacket& packet) const {
+    RayPacket scratch = packet;  // the traversal's leaves take it mutable, but AnyHit changes nothing
+    return trace_packet<true>(wide_, blocks_, scratch, nullptr);
+}
+
+#else
+
+uint32_t TriangleBvh::intersect_packet(RayPacket& packet, PacketHits& hits) const {
+    return intersect_lane_by_lane(packet, hits, [&](Ray& ray, Hit& hit) { return intersect<false>(ray, hit); });
+}
+
+uint32_t TriangleBvh::occluded_packet(const RayPacket& packet) const {
+    return occluded_lane_by_lane(packet, [&](const Ray& ray) {
+        Ray r = ray;
+        Hit scratch;
+        return intersect<true>(r, scratch);
+    });
+}
+
+#endif
+
+}  // namespace glint

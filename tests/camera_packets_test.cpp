@@ -1,0 +1,75 @@
+// The render traces camera rays eight pixels at a time as packets (Integrator::
+// takes_first_hits); the images must be the ones tracing them one by one makes, bit for
+// bit, for every scene in scenes/ (at 64×48), AOVs included.
+
+#include "glint/image/aov_film.h"
+#include "glint/integrators/integrator_registry.h"
+#include "glint/scene/render_scene.h"
+#include "glint/scene_format/toml_scene_loader.h"
+
+#include "example_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glint {
+namespace {
+
+const std::filesystem::path kSource(GLINT_SOURCE_DIR);
+constexpr uint32_t kWidth = 64, kHeight = 48;
+
+/// Another integrator's Li(), with camera rays traced one at a time (the default
+/// Li_given_first_hit and takes_first_hits).
+class OneRayAtATime final : public Integrator {
+public:
+    explicit OneRayAtATime(const Integrator& inner) : inner_(inner) {}
+    Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const override {
+        return inner_.Li(scene, ray, context);
+    }
+
+private:
+    const Integrator& inner_;
+};
+
+/// Pixels of `a` that differ from `b` in any channel (bitwise, not within a tolerance).
+int differing_pixels(const Image& a, const Image& b) {
+    int differ = 0;
+    for (std::size_t p = 0; p < std::size_t(a.width) * a.height; ++p)
+        for (int c = 0; c < a.channels; ++c)
+            if (a.pixels[p * a.channels + c] != b.pixels[p * b.channels + c]) {
+                ++differ;
+                break;
+            }
+    return differ;
+}
+
+class CameraPackets : public testing::TestWithParam<std::string> {};
+
+TEST_P(CameraPackets, RenderTheImageOfSingleRays) {
+    LoadedScene loaded = load_toml_scene(kSource / "scenes" / (GetParam() + ".toml"));
+    loaded.settings.width = kWidth;
+    loaded.settings.height = kHeight;
+    const RenderScene scene(std::move(loaded.scene));
+    const std::unique_ptr<Integrator> integrator = make_integrator(loaded.settings);
+    const OneRayAtATime one_by_one(*integrator);
+    const std::vector<Aov> aovs = {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Spp, Aov::Variance};
+    Film packets(kWidth, kHeight), singles(kWidth, kHeight);
+    AovFilm packet_aovs(kWidth, kHeight, aovs), single_aovs(kWidth, kHeight, aovs);
+    integrator->render(scene, loaded.settings, packets, {}, nullptr, nullptr, &packet_aovs);
+    one_by_one.render(scene, loaded.settings, singles, {}, nullptr, nullptr, &single_aovs);
+    // The radiance and every AOV channel.
+    EXPECT_EQ(differing_pixels(packet_aovs.append_to(packets.to_image()), single_aovs.append_to(singles.to_image())),
+              0)
+        << "of " << kWidth * kHeight << (integrator->takes_first_hits() ? "" : " (this integrator takes no packets)");
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, CameraPackets, testing::ValuesIn(glint_test::example_scene_names(kSource)),
+                         [](const testing::TestParamInfo<std::string>& p) { return p.param; });
+
+}  // namespace
+}  // namespace glint

@@ -1,0 +1,288 @@
+// Packet queries of the mesh BVH against the single-ray queries they stand for: every lane
+// of every packet must find what its ray finds alone, for coherent packets (rows of camera
+// rays) and incoherent ones (random rays, mixed directions in one packet), with finite
+// tmax, partly filled packets, and rays through the edges of a closed mesh.
+
+#include "glint/accel/ray_packet.h"
+#include "glint/accel/triangle_bvh.h"
+#include "glint/assets/mesh_loader.h"
+#include "glint/geometry/sphere.h"
+#include "glint/geometry/triangle_mesh.h"
+#include "glint/scene/render_scene.h"
+#include "glint/scene/scene.h"
+
+#include "test_rays.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace glint {
+namespace {
+
+const std::filesystem::path kMeshDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
+const std::filesystem::path kTestDataDir = std::filesystem::path(GLINT_SOURCE_DIR) / "tests" / "data";
+
+using glint_test::random_rays;
+
+/// A pinhole camera's rays, row-major, looking at the box from `from` (rows of eight make
+/// coherent packets).
+std::vector<Ray> camera_rays(const Bounds3& box, const Vec3& from, int size) {
+    const Vec3 eye = box.center() + from * length(box.diagonal());
+    const Vec3 forward = normalize(box.center() - eye);
+    const Vec3 right = normalize(cross(forward, std::abs(forward.y) > 0.9f ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+    const Vec3 up = cross(right, forward);
+    std::vector<Ray> rays;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const float sx = (2.0f * (float(x) + 0.5f) / float(size) - 1.0f) * 0.5f;
+            const float sy = (1.0f - 2.0f * (float(y) + 0.5f) / float(size)) * 0.5f;
+            rays.emplace_back(eye, normalize(forward + right * sx + up * sy));
+        }
+    return rays;
+}
+
+/// Rays from the points where `camera` rays hit the mesh (lifted off it a little) toward
+/// one point light, ending there: packets of them share a direction octant but start at
+/// spread-out points, and their tmax is finite.
+std::vector<Ray> shadow_rays(const TriangleBvh& bvh, const std::vector<Ray>& camera, const Vec3& light) {
+    std::vector<Ray> rays;
+    for (Ray ray : camera) {
+        Hit hit;
+        if (!bvh.intersect<false>(ray, hit)) continue;
+        const Vec3 p = ray.at(hit.t * 0.9999f);
+        rays.emplace_back(p, normalize(light - p), 0.0f, length(light - p));
+    }
+    return rays;
+}
+
+/// Traces `rays` in packets of eight (lanes in `lanes` only) and one by one; every active
+/// lane agrees with its single ray on hit or miss, t and the triangle (another triangle
+/// only at the same t, a ray through a shared edge), and on any hit; inactive lanes are
+/// left as they were. Returns the number of closest hits.
+int expect_packets_agree(const TriangleBvh& bvh, const std::vector<Ray>& rays, uint32_t lanes = RayPacket::kAllLanes) {
+    int hits = 0;
+    for (size_t first = 0; first + RayPacket::kSize <= rays.size(); first += RayPacket::kSize) {
+        // Inactive lanes hold their rays too, so that a query leaking into them would hit.
+        RayPacket packet;
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) packet.set(lane, rays[first + lane]);
+        packet.active = lanes;
+        RayPacket shadow = packet;
+        PacketHits packet_hits;
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) packet_hits.primitive[lane] = kNoHit;
+        const uint32_t hit_lanes = bvh.intersect_packet(packet, packet_hits);
+        const uint32_t occluded_lanes = bvh.occluded_packet(shadow);
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) {
+            const size_t i = first + lane;
+            if (!(lanes >> lane & 1)) {
+                EXPECT_EQ(packet.tmax[lane], rays[first + lane].tmax) << "inactive lane " << lane << ", ray " << first;
+                EXPECT_EQ(packet_hits.primitive[lane], kNoHit) << "inactive lane " << lane;
+                EXPECT_FALSE((hit_lanes | occluded_lanes) >> lane & 1) << "inactive lane " << lane;
+                continue;
+            }
+            Ray ray = rays[i];
+            Hit hit;
+            const bool single = bvh.intersect<false>(ray, hit);
+            Ray any = rays[i];
+            Hit any_hit;
+            EXPECT_EQ(bool(occluded_lanes >> lane & 1), bvh.intersect<true>(any, any_hit)) << "any hit, ray " << i;
+            EXPECT_EQ(bool(hit_lanes >> lane & 1), single) << "ray " << i;
+            if (!single || !(hit_lanes >> lane & 1)) continue;
+            ++hits;
+            EXPECT_EQ(packet_hits.t[lane], hit.t) << "ray " << i;
+            EXPECT_EQ(packet.tmax[lane], hit.t) << "ray " << i;
+            if (packet_hits.primitive[lane] != hit.primitive) {
+                EXPECT_EQ(packet_hits.t[lane], hit.t) << "ray " << i << " hit another triangle at another t";
+                continue;
+            }
+            EXPECT_EQ(packet_hits.u[lane], hit.u) << "ray " << i;
+            EXPECT_EQ(packet_hits.v[lane], hit.v) << "ray " << i;
+        }
+    }
+    return hits;
+}
+
+class PacketMesh : public testing::TestWithParam<std::string> {
+protected:
+    void SetUp() override {
+        const std::filesystem::path path = GetParam();
+        if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (shared data absent)";
+        mesh_ = std::make_unique<TriangleMesh>(load_mesh_data(path), path.filename().string());
+        mesh_->prepare();
+    }
+    std::unique_ptr<TriangleMesh> mesh_;
+};
+
+TEST_P(PacketMesh, CoherentPacketsAgreeWithSingleRays) {
+    const Bounds3 box = mesh_->bounds();
+    // Views along an axis, a diagonal and from below: the lanes' dominant axes differ
+    // between views, and within the diagonal view's packets as well.
+    int hits = 0, traced = 0;
+    for (const Vec3 from : {Vec3(0, 0, 1), Vec3(0.6f, 0.5f, 0.62f), Vec3(-0.3f, -1.0f, 0.2f)}) {
+        const std::vector<Ray> rays = camera_rays(box, from, 64);
+        hits += expect_packets_agree(mesh_->bvh(), rays);
+        traced += int(rays.size());
+    }
+    EXPECT_GT(hits, traced / 10) << "the views should mostly see the mesh";
+}
+
+TEST_P(PacketMesh, ShadowRayPacketsAgreeWithSingleRays) {
+    const Bounds3 box = mesh_->bounds();
+    const std::vector<Ray> camera = camera_rays(box, Vec3(0.3f, 0.4f, 1.0f), 64);
+    const float size = length(box.diagonal());
+    for (const Vec3 light : {box.center() + Vec3(1.0f, 1.5f, 0.5f) * size, box.center() + Vec3(-0.2f, 0.1f, 2.0f) * size}) {
+        const std::vector<Ray> rays = shadow_rays(mesh_->bvh(), camera, light);
+        ASSERT_GT(rays.size(), camera.size() / 20);
+        // Closest hits too: some of these rays hit the mesh again on their way.
+        EXPECT_GT(expect_packets_agree(mesh_->bvh(), rays), 0);
+    }
+}
+
+TEST_P(PacketMesh, IncoherentPacketsAgreeWithSingleRays) {
+    const std::vector<Ray> rays = random_rays(mesh_->bounds(), 4000, 11);
+    EXPECT_GT(expect_packets_agree(mesh_->bvh(), rays), int(rays.size()) / 10);
+}
+
+TEST_P(PacketMesh, PartlyFilledPacketsLeaveTheOtherLanesAlone) {
+    const std::vector<Ray> rays = camera_rays(mesh_->bounds(), Vec3(0.2f, 0.3f, 1.0f), 32);
+    for (const uint32_t lanes : {0x01u, 0x80u, 0x5au, 0x7eu}) expect_packets_agree(mesh_->bvh(), rays, lanes);
+}
+
+INSTANTIATE_TEST_SUITE_P(InTree, PacketMesh, testing::Values((kTestDataDir / "icosphere.ply").string()));
+INSTANTIATE_TEST_SUITE_P(Stanford, PacketMesh,
+                         testing::Values((kMeshDir / "stanford_bunny.ply").string(),
+                                         (kMeshDir / "stanford_lucy_100k.ply").string()));
+
+TEST(PacketWatertight, PacketsThroughEdgesAndVerticesOfAClosedMeshNeverEscape) {
+    // The in-tree icosphere is closed; rays from inside through its vertices and points on
+    // its edges, eight of them (in all directions) to a packet, must all hit.
+    TriangleMesh mesh(load_mesh_data(kTestDataDir / "icosphere.ply"));
+    mesh.prepare();
+    const std::vector<Vec3> targets = glint_test::vertices_and_edge_points(mesh.data());
+    int escaped = 0, traced = 0;
+    for (const Vec3 origin : {Vec3(0.0f), Vec3(0.1f, -0.2f, 0.05f)})
+        for (size_t first = 0; first + RayPacket::kSize <= targets.size(); first += RayPacket::kSize) {
+            RayPacket packet;
+            for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane)
+                packet.set(lane, Ray(origin, targets[first + lane] - origin));
+            RayPacket shadow = packet;
+            PacketHits hits;
+            escaped += std::popcount(~mesh.bvh().intersect_packet(packet, hits) & RayPacket::kAllLanes);
+            escaped += std::popcount(~mesh.bvh().occluded_packet(shadow) & RayPacket::kAllLanes);
+            traced += 2 * RayPacket::kSize;
+        }
+    EXPECT_EQ(escaped, 0) << "of " << traced << " lanes";
+}
+
+TEST(PacketDegenerate, AnEmptyBvhHitsNothing) {
+    TriangleBvh triangles;
+    triangles.build({}, {});
+    RayPacket packet;
+    for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) packet.set(lane, Ray(Vec3(0.0f), Vec3(0, 0, 1)));
+    PacketHits hits;
+    EXPECT_EQ(triangles.intersect_packet(packet, hits), 0u);
+    EXPECT_EQ(triangles.occluded_packet(packet), 0u);
+}
+
+/// A scene of `copies` placements of the icosphere (turned, stretched, one mirrored), a
+/// sphere, and a glass copy (which shadow rays pass under DielectricShadows::None); with
+/// `moving`, one placement moves during the shutter.
+RenderScene placed_scene(int copies, bool moving) {
+    auto mesh = std::make_shared<TriangleMesh>(load_mesh_data(kTestDataDir / "icosphere.ply"));
+    Scene scene;
+    const uint32_t matte = scene.add_material(Material{});
+    Material glass;
+    glass.transparency = 1.0f;
+    const uint32_t clear = scene.add_material(glass);
+    for (int i = 0; i < copies; ++i) {
+        const float x = 2.5f * float(i % 4) - 4.0f, y = 2.5f * float(i / 4) - 1.0f;
+        Transform t = Transform::translate(Vec3(x, y, 0.0f)) * Transform::rotate(20.0f * float(i), Vec3(0, 1, 1));
+        if (i % 3 == 1) t = t * Transform::scale(Vec3(0.7f, 1.3f, 1.0f));
+        if (i % 3 == 2) t = t * Transform::scale(Vec3(-1.0f, 1.0f, 1.0f));
+        const uint32_t object = scene.add_object(mesh, i == 0 ? clear : matte, t);
+        if (moving && i == 1)
+            scene.set_motion(object, AnimatedTransform({{0.0f, t}, {1.0f, Transform::translate(Vec3(0.4f, 0, 0)) * t}}));
+    }
+    scene.add_object(std::make_shared<Sphere>(Vec3(0.5f, 0.3f, -2.0f), 1.2f), matte);
+    return RenderScene(std::move(scene));
+}
+
+/// Rays from a camera in front of the scene (rows of eight: coherent packets) and random
+/// ones, each with a time in the shutter.
+std::vector<Ray> scene_rays(const RenderScene& scene) {
+    const Bounds3 box = scene.bounds();
+    std::vector<Ray> rays = camera_rays(box, Vec3(0.1f, 0.2f, 1.0f), 48);
+    for (const Ray& r : random_rays(box, 800, 5)) rays.push_back(r);
+    for (size_t i = 0; i < rays.size(); ++i) rays[i].time = float(i % 7) / 6.0f;
+    return rays;
+}
+
+/// Every lane of every packet of `rays` agrees with the scene's single-ray queries: hit or
+/// miss, t, object, primitive (another one only at the same t) and any hit under both
+/// dielectric-shadow modes. Returns the closest hits.
+int expect_scene_packets_agree(const RenderScene& scene, const std::vector<Ray>& rays) {
+    int hits = 0;
+    for (size_t first = 0; first + RayPacket::kSize <= rays.size(); first += RayPacket::kSize) {
+        RayPacket packet;
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) packet.set(lane, rays[first + lane]);
+        const uint32_t blocked = scene.occluded_packet(packet, DielectricShadows::Opaque);
+        const uint32_t blocked_but_glass = scene.occluded_packet(packet, DielectricShadows::None);
+        PacketHits packet_hits;
+        const uint32_t hit_lanes = scene.intersect_packet(packet, packet_hits);
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) {
+            const size_t i = first + lane;
+            EXPECT_EQ(bool(blocked >> lane & 1), scene.occluded(rays[i], DielectricShadows::Opaque)) << "ray " << i;
+            EXPECT_EQ(bool(blocked_but_glass >> lane & 1), scene.occluded(rays[i], DielectricShadows::None))
+                << "ray " << i;
+            Ray ray = rays[i];
+            Hit hit;
+            const bool single = scene.intersect(ray, hit);
+            EXPECT_EQ(bool(hit_lanes >> lane & 1), single) << "ray " << i;
+            if (!single || !(hit_lanes >> lane & 1)) continue;
+            ++hits;
+            const Hit h = packet_hits.hit(lane);
+            EXPECT_EQ(h.t, hit.t) << "ray " << i;
+            EXPECT_EQ(packet.tmax[lane], hit.t) << "ray " << i;
+            EXPECT_EQ(h.object, hit.object) << "ray " << i;  // the objects do not touch: no ties between them
+            if (h.primitive != hit.primitive) continue;      // a tie at a shared edge, same t
+            EXPECT_EQ(h.u, hit.u) << "ray " << i;
+            EXPECT_EQ(h.v, hit.v) << "ray " << i;
+        }
+    }
+    return hits;
+}
+
+TEST(ScenePackets, FewObjectsAgreeWithSingleRays) {
+    const RenderScene scene = placed_scene(3, false);
+    const std::vector<Ray> rays = scene_rays(scene);
+    EXPECT_GT(expect_scene_packets_agree(scene, rays), int(rays.size()) / 10);
+}
+
+TEST(ScenePackets, ManyObjectsThroughTheTopLevelAgreeWithSingleRays) {
+    const RenderScene scene = placed_scene(12, false);
+    const std::vector<Ray> rays = scene_rays(scene);
+    EXPECT_GT(expect_scene_packets_agree(scene, rays), int(rays.size()) / 10);
+}
+
+TEST(ScenePackets, AMovingObjectIsWhereEachLanesTimePutsIt) {
+    const RenderScene scene = placed_scene(12, true);
+    ASSERT_TRUE(scene.has_motion());
+    const std::vector<Ray> rays = scene_rays(scene);
+    EXPECT_GT(expect_scene_packets_agree(scene, rays), int(rays.size()) / 10);
+}
+
+TEST(ScenePackets, AnEmptySceneHitsNothing) {
+    const RenderScene scene{Scene{}};
+    RayPacket packet;
+    for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) packet.set(lane, Ray(Vec3(0.0f), Vec3(0, 0, 1)));
+    PacketHits hits;
+    EXPECT_EQ(scene.intersect_packet(packet, hits), 0u);
+    EXPECT_EQ(scene.occluded_packet(packet), 0u);
+}
+
+}  // namespace
+}  // namespace glint
