@@ -18,6 +18,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -40,6 +41,26 @@ double median(std::vector<double> v) {
 }
 
 enum class Query { Closest, Any };
+
+/// A ray set as --rays names it: which of the generated rays, the query traced with them,
+/// and whether they go one at a time or in packets of eight consecutive rays.
+struct RaySet {
+    const char* name;
+    enum class Rays { Primary, Shadow, Incoherent } rays;
+    Query query;
+    bool packets;
+};
+constexpr std::array kRaySets = {
+    RaySet{"primary", RaySet::Rays::Primary, Query::Closest, false},
+    RaySet{"shadow", RaySet::Rays::Shadow, Query::Any, false},
+    RaySet{"incoherent", RaySet::Rays::Incoherent, Query::Closest, false},
+    RaySet{"primary8", RaySet::Rays::Primary, Query::Closest, true},
+    RaySet{"shadow8", RaySet::Rays::Shadow, Query::Any, true},
+};
+
+const RaySet& ray_set(const std::string& name) {
+    return *std::find_if(kRaySets.begin(), kRaySets.end(), [&](const RaySet& s) { return name == s.name; });
+}
 
 /// Traces `rays` with `trace(ray) -> PrimaryHit` on `threads` threads, writing results.
 template <typename Trace>
@@ -143,12 +164,12 @@ public:
         incoherent_ = std::move(secondary.incoherent);
     }
 
-    /// `set` is a ray set's name, with "8" appended for the same rays in packets of eight.
-    Record trace(const std::string& set, int threads) {
-        const bool packets = set.back() == '8';
-        const std::string base = packets ? set.substr(0, set.size() - 1) : set;
-        const std::vector<BenchRay>& rays = base == "primary" ? primary_ : base == "shadow" ? shadow_ : incoherent_;
-        const Query query = base == "shadow" ? Query::Any : Query::Closest;
+    /// `set` is one of kRaySets.
+    Record trace(const RaySet& set, int threads) {
+        const std::vector<BenchRay>& rays = set.rays == RaySet::Rays::Primary  ? primary_
+                                            : set.rays == RaySet::Rays::Shadow ? shadow_
+                                                                               : incoherent_;
+        const Query query = set.query;
         const Shape& mesh = *glint_;
         auto glint_trace = [&](const BenchRay& b) -> PrimaryHit {
             Ray ray = to_glint(b);
@@ -183,15 +204,15 @@ public:
         std::vector<double> glint_ms, embree_ms;
         std::vector<PrimaryHit> glint_hits, embree_hits;
         for (int rep = 0; rep < reps_; ++rep) {
-            glint_ms.push_back(packets ? run_packets(rays, threads, glint_hits, glint_packet)
-                                       : run(rays, threads, glint_hits, glint_trace));
-            embree_ms.push_back(packets ? run_packets(rays, threads, embree_hits, embree_packet)
-                                        : run(rays, threads, embree_hits, embree_trace));
+            glint_ms.push_back(set.packets ? run_packets(rays, threads, glint_hits, glint_packet)
+                                           : run(rays, threads, glint_hits, glint_trace));
+            embree_ms.push_back(set.packets ? run_packets(rays, threads, embree_hits, embree_packet)
+                                            : run(rays, threads, embree_hits, embree_trace));
         }
         const double mrays = double(rays.size()) * 1e-3;
         Record r;
         r.mesh = name_;
-        r.rays = set;
+        r.rays = set.name;
         r.threads = threads;
         r.glint = mrays / median(glint_ms);
         r.embree = mrays / median(embree_ms);
@@ -243,8 +264,9 @@ int main(int argc, char** argv) {
     int reps = 5;
     bool json = false;
     app.add_option("--mesh", meshes, "Mesh file (repeatable); default: the shared bunny, dragon and Lucy");
-    app.add_option("--rays", sets, "Ray set (repeatable); default: all")
-        ->check(CLI::IsMember({"primary", "shadow", "incoherent", "primary8", "shadow8"}));
+    std::vector<std::string> set_names;
+    for (const RaySet& s : kRaySets) set_names.emplace_back(s.name);
+    app.add_option("--rays", sets, "Ray set (repeatable); default: all")->check(CLI::IsMember(set_names));
     app.add_option("--threads", threads, "Thread count (repeatable); default: 1 and 2")->check(CLI::PositiveNumber);
     app.add_option("--reps", reps, "Repetitions per measurement (the median is reported)")->check(CLI::PositiveNumber);
     app.add_flag("--json", json, "Print one JSON array of records instead of the table");
@@ -255,7 +277,7 @@ int main(int argc, char** argv) {
             meshes.push_back((dir / f).string());
     }
     if (threads.empty()) threads = {1, 2};
-    if (sets.empty()) sets = {"primary", "shadow", "incoherent", "primary8", "shadow8"};
+    if (sets.empty()) sets = set_names;
 
     std::vector<Record> records;
     try {
@@ -267,7 +289,7 @@ int main(int argc, char** argv) {
             bench.make_rays();
             for (const std::string& set : sets)
                 for (int t : threads) {
-                    const Record r = bench.trace(set, t);
+                    const Record r = bench.trace(ray_set(set), t);
                     records.push_back(r);
                     if (json) continue;
                     fmt::print("  {:<10} {:>7} rays  {} thr  glint {:8.2f} Mrays/s  embree {:8.2f} Mrays/s  ratio {:.2f}"

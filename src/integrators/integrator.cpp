@@ -15,6 +15,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glint {
@@ -113,30 +114,40 @@ CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& cam
 template <class AddSample>
 void Integrator::take_packet_samples(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y,
                                      uint32_t count, uint32_t index, uint32_t width, uint32_t height,
-                                     std::span<Sampler> samplers, FirstHit* first_hit, uint64_t& rays,
+                                     std::span<Sampler> samplers, bool aovs, uint64_t& rays,
                                      const AddSample& add) const {
+    // Each pixel's context: its own sampler and, for the AOVs, its own first-hit record.
+    std::array<FirstHit, RayPacket::kSize> first_hits;
+    auto context_of = [&](uint32_t k) {
+        return TraceContext{.sampler = samplers[k], .first_hit = aovs ? &first_hits[k] : nullptr};
+    };
+    std::array<TraceContext, RayPacket::kSize> contexts = [&]<std::size_t... K>(std::index_sequence<K...>) {
+        return std::array{context_of(K)...};
+    }
+    (std::make_index_sequence<RayPacket::kSize>());
     std::array<CameraSample, RayPacket::kSize> samples;
     std::array<Ray, RayPacket::kSize> camera_rays;
-    std::array<RayCone, RayPacket::kSize> cones;
     RayPacket packet;
     for (uint32_t k = 0; k < count; ++k) {
-        TraceContext context{samplers[k]};
-        camera_rays[k] = camera_ray(scene, scene.camera(), filter, x + k, y, index, width, height, context, samples[k]);
-        cones[k] = context.cone;
+        camera_rays[k] =
+            camera_ray(scene, scene.camera(), filter, x + k, y, index, width, height, contexts[k], samples[k]);
         packet.set(k, camera_rays[k]);
     }
     PacketHits hits;
     const uint32_t hit_lanes = scene.intersect_packet(packet, hits);
+    std::array<Color, RayPacket::kSize> radiance;
+    Li_given_first_hits(scene, FirstHits{std::span(camera_rays.data(), count), hits, hit_lanes},
+                        std::span(contexts.data(), count), radiance);
     for (uint32_t k = 0; k < count; ++k) {
-        TraceContext context{samplers[k]};
-        context.first_hit = first_hit;
-        context.cone = cones[k];
-        if (first_hit) first_hit->hit = false;
-        const Hit hit = hits.hit(k);
-        samples[k].radiance = Li_given_first_hit(scene, camera_rays[k], (hit_lanes >> k & 1) ? &hit : nullptr, context);
-        rays += context.rays;
-        add(x + k, y, samples[k]);
+        samples[k].radiance = radiance[k];
+        rays += contexts[k].rays;
+        add(x + k, y, samples[k], first_hits[k]);
     }
+}
+
+void Integrator::Li_given_first_hits(const RenderScene& scene, const FirstHits& first, std::span<TraceContext> contexts,
+                                     std::span<Color> radiance) const {
+    for (uint32_t k = 0; k < first.rays.size(); ++k) radiance[k] = Li(scene, first.rays[k], contexts[k]);
 }
 
 PixelExplanation Integrator::explain(const RenderScene& scene, const RenderSettings& settings, uint32_t x, uint32_t y,
@@ -259,16 +270,16 @@ RenderStats Integrator::render_listed_tiles(const RenderScene& scene, const Rend
             // go through the scene as one packet. Each pixel still takes its samples in order,
             // each lane from its own sampler, so the film is the one the loop below makes.
             std::vector<Sampler> samplers(RayPacket::kSize, sampler);
-            auto add = [&](uint32_t x, uint32_t y, const CameraSample& sample) {
+            auto add = [&](uint32_t x, uint32_t y, const CameraSample& sample, const FirstHit& hit) {
                 film.add_sample(x, y, sample.radiance, sample.filter_weight);
-                if (aovs) aovs->add_sample(x, y, first_hit, sample.radiance);
+                if (aovs) aovs->add_sample(x, y, hit, sample.radiance);
             };
             for (uint32_t y = y0; y < y1; ++y)
                 for (uint32_t x = x0; x < x1; x += RayPacket::kSize) {
                     const uint32_t count = std::min(RayPacket::kSize, x1 - x);
                     for (uint32_t index = 0; index < n * n; ++index)
-                        take_packet_samples(scene, filter, x, y, count, index, width, height, samplers,
-                                            aovs ? &first_hit : nullptr, context.rays, add);
+                        take_packet_samples(scene, filter, x, y, count, index, width, height, samplers, aovs != nullptr,
+                                            context.rays, add);
                 }
         } else if (!settings.adaptive) {
             for (uint32_t y = y0; y < y1; ++y)

@@ -1,5 +1,6 @@
 #include "glint/integrators/whitted_integrator.h"
 
+#include "glint/integrators/delta_light_shadows.h"
 #include "glint/integrators/medium_absorption.h"
 #include "glint/integrators/shading_point.h"
 #include "glint/lights/area_light.h"
@@ -37,6 +38,20 @@ float power_heuristic(float n_pdf, float other_n_pdf) {
     return 1.0f / (1.0f + r * r);
 }
 
+/// RenderScene::occluded() for a shadow ray toward light `light`, answered from `known` (the
+/// first hit's shadow rays traced in a packet) when it holds the ray.
+bool occluded(const RenderScene& scene, const Ray& shadow, uint32_t light, const DeltaLightShadows& known) {
+    if (const std::optional<bool> answer = known.occluded(light, shadow)) return *answer;
+    return scene.occluded(shadow);
+}
+
+/// `ray` as its closest-hit query left it: ending at its hit, `t`.
+Ray ray_to_hit(const Ray& ray, float t) {
+    Ray r = ray;
+    r.tmax = t;
+    return r;
+}
+
 }  // namespace
 
 std::unique_ptr<Integrator> WhittedIntegrator::create(const RenderSettings& settings) {
@@ -47,12 +62,41 @@ Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceConte
     return trace(scene, ray, 0, IorStack(scene.ambient_ior()), context);
 }
 
-Color WhittedIntegrator::Li_given_first_hit(const RenderScene& scene, const Ray& ray, const Hit* hit,
-                                            TraceContext& context) const {
-    if (context.tree) return Li(scene, ray, context);  // explain records its rays from the start
-    context.glossy_origin.pdf = 0.0f;
-    ++context.rays;
-    return radiance_from_hit<false>(scene, ray, hit, 0, IorStack(scene.ambient_ior()), -1, context);
+void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const FirstHits& first,
+                                            std::span<TraceContext> contexts, std::span<Color> radiance) const {
+    const IorStack media(scene.ambient_ior());
+    // Lane k from its first hit: its surface interaction and shadow rays found already, or not.
+    auto shade_lane = [&](uint32_t k, SurfaceInteraction* si, const DeltaLightShadows* shadows) {
+        TraceContext& context = contexts[k];
+        const Ray& ray = first.rays[k];
+        if (context.tree) {  // explain records its rays from the start
+            radiance[k] = Li(scene, ray, context);
+            return;
+        }
+        context.glossy_origin.pdf = 0.0f;
+        context.first_hit_shadows = shadows;
+        ++context.rays;
+        if (!first.hit(k)) {
+            radiance[k] = radiance_from_hit<false>(scene, ray, nullptr, 0, media, -1, context);
+            return;
+        }
+        const Hit hit = first.hits.hit(k);
+        radiance[k] = si ? shade_hit<false, true>(scene, ray, hit, *si, 0, media, -1, context)
+                         : radiance_from_hit<false>(scene, ray, &hit, 0, media, -1, context);
+        context.first_hit_shadows = nullptr;
+    };
+    if (!scene.packets_pay()) {
+        for (uint32_t k = 0; k < first.rays.size(); ++k) shade_lane(k, nullptr, nullptr);
+        return;
+    }
+    // Every hit's point first, then the shadow rays of all toward each delta light as packets.
+    std::array<SurfaceInteraction, RayPacket::kSize> interactions;
+    for (uint32_t k = 0; k < first.rays.size(); ++k)
+        if (first.hit(k))
+            interactions[k] = scene.interaction(ray_to_hit(first.rays[k], first.hits.t[k]), first.hits.hit(k));
+    const std::array<DeltaLightShadows, RayPacket::kSize> shadows =
+        trace_delta_light_shadows(scene, interactions, first.hit_lanes);
+    for (uint32_t k = 0; k < first.rays.size(); ++k) shade_lane(k, &interactions[k], &shadows[k]);
 }
 
 Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
@@ -80,12 +124,18 @@ Color WhittedIntegrator::glossy_background_weight(const RenderScene& scene, cons
     return background * power_heuristic(float(origin.samples) * origin.pdf, float(light_samples_) * light_pdf);
 }
 
-template <bool Record>
+template <bool Record, bool KnownShadows>
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                       const Vec3& ng, uint32_t glossy_count, TraceContext& context) const {
     const int32_t node = context.node;
     const Vec3 origin = offset_ray_origin(si.p, ng);
     Color sum;
+    auto blocked = [&](const Ray& shadow, uint32_t light) {
+        if constexpr (KnownShadows)
+            return occluded(scene, shadow, light, *context.first_hit_shadows);
+        else
+            return scene.occluded(shadow);
+    };
     auto add = [&](const LightSample& ls, float weight, uint32_t light) {
         if (!(ls.pdf > 0.0f) || ls.radiance.is_black()) return;
         if (!bsdf.may_reflect(ls.direction)) return;  // behind the surface, or a glass with no smooth lobe
@@ -96,7 +146,7 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         // finds its way through the glass; docs/shading.md).
         const bool through = dot(ls.direction, ng) < 0.0f;
         const Ray shadow = shadow_ray(through ? offset_ray_origin(si.p, -ng) : origin, ls, si.time);
-        if (through ? scene.occluded(shadow, DielectricShadows::Opaque) : scene.occluded(shadow)) {
+        if (through ? scene.occluded(shadow, DielectricShadows::Opaque) : blocked(shadow, light)) {
             if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, true, Color());
             return;
         }
@@ -196,30 +246,33 @@ Color WhittedIntegrator::radiance_from_hit(const RenderScene& scene, const Ray& 
         if constexpr (Record) context.tree->add_radiance(node, background);
         return background;
     }
-    const Hit& hit = *found;
-    Ray r = ray;
-    r.tmax = hit.t;  // as the query left it
-    SurfaceInteraction si = scene.interaction(r, hit);
+    SurfaceInteraction si = scene.interaction(ray_to_hit(ray, found->t), *found);
+    return shade_hit<Record>(scene, ray, *found, si, depth, media, node, context);
+}
+
+template <bool Record, bool KnownShadows>
+Color WhittedIntegrator::shade_hit(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                                   uint32_t depth, const IorStack& media, int32_t node, TraceContext& context) const {
     // The ray's cone where it hit sets the texture footprint; the rays leaving here carry it
     // on, bounced (shade restores it for each).
-    const RayCone cone = context.cone.at(r.tmax * length(ray.direction));
+    const RayCone cone = context.cone.at(hit.t * length(ray.direction));
     si.uv_footprint = cone.uv_footprint(si, ray.direction);
     context.cone = cone.bounced(si.curvature);
-    if constexpr (Record) context.tree->set_hit(node, r.tmax, hit.object, si.materials[0], Vec3());
+    if constexpr (Record) context.tree->set_hit(node, hit.t, hit.object, si.materials[0], Vec3());
     // Inside an absorbing dielectric the radiance from the hit loses exp(−σa·d) on the way.
-    const Color kept = transmittance(scene, media, r.tmax);
+    const Color kept = transmittance(scene, media, hit.t);
     // Only hits on per-vertex materials build a (blended) Material.
     if (si.blends_materials) {
         const Material blended = blended_material(scene, si);
         apply_normal_map(si, blended);
-        return kept * shade<Record>(scene, ray, hit.object, si, blended, depth, media, context);
+        return kept * shade<Record, KnownShadows>(scene, ray, hit.object, si, blended, depth, media, context);
     }
     const Material& m = scene.material(si.materials[0]);
     apply_normal_map(si, m);
-    return kept * shade<Record>(scene, ray, hit.object, si, m, depth, media, context);
+    return kept * shade<Record, KnownShadows>(scene, ray, hit.object, si, m, depth, media, context);
 }
 
-template <bool Record>
+template <bool Record, bool KnownShadows>
 Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
                                const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const {
     const ShadingPoint sp = shading_point(si, m, ray, media);
@@ -250,7 +303,7 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     // A clear dielectric (t = 1) takes no diffuse light (handout §6.2); its highlight and a
     // rough one's glossy lobes do.
     if (t < 1.0f || bsdf.has_smooth_lobes())
-        radiance += direct_light<Record>(scene, bsdf, si, sp.ng, glossy_count, context);
+        radiance += direct_light<Record, KnownShadows>(scene, bsdf, si, sp.ng, glossy_count, context);
     if (depth >= max_depth_) return radiance;
 
     // The throughput from the camera to the children, for the tree only.

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for_each.h>
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_set>
 
@@ -39,6 +40,8 @@ RenderScene::RenderScene(Scene description) : scene_(std::move(description)) {
         }
     }
     has_motion_ = scene_.has_motion();
+    packets_pay_ = std::any_of(objects_.begin(), objects_.end(),
+                               [](const HotObject& o) { return o.shape && o.shape->traces_packets(); });
     build_area_lights();
     // Top level: few, large primitives; one per leaf keeps every object test behind a box
     // test, and the leaf reference becomes the object's index.

@@ -54,6 +54,8 @@ public:
     /// one; a mesh traces them together.
     virtual uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const;
     [[nodiscard]] virtual uint32_t occluded_packet(const RayPacket& packet) const;
+    /// Whether the packet queries trace the lanes together rather than one by one.
+    [[nodiscard]] virtual bool traces_packets() const { return false; }
 
     /// intersect() and occluded() that also count what they test, for the viewer's heatmaps
     /// (accel/traversal_count.h). An analytic shape is one primitive; a mesh counts its

@@ -58,6 +58,7 @@ public:
     /// Packets through the BVH together; with an alpha mask, lane by lane.
     uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const override;
     [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet) const override;
+    [[nodiscard]] bool traces_packets() const override { return !has_alpha_mask(); }
     bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
     [[nodiscard]] bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;

@@ -22,8 +22,10 @@
 namespace glint {
 
 class Camera;
+class DeltaLightShadows;
 class Filter;
 class RenderScene;
+struct PacketHits;
 
 struct RenderStats {
     /// Every ray cast into the scene: camera, reflection, refraction and shadow rays.
@@ -71,6 +73,21 @@ struct TraceContext {
     /// first; an integrator moves it along each ray and bounces it at each hit, so texture
     /// lookups filter what a pixel sample covers. Here for the reason `branch` is.
     RayCone cone = {};
+    /// Whitted: the shadow rays of the camera ray's first hit, already traced in packets with
+    /// its neighbours' (null otherwise); read only while shading that hit. Here for the
+    /// reason `branch` is.
+    const DeltaLightShadows* first_hit_shadows = nullptr;
+};
+
+/// The camera rays of neighbouring pixels of a row after the render found their closest
+/// hits as one packet (RenderScene::intersect_packet): what Li_given_first_hits() shades.
+struct FirstHits {
+    std::span<const Ray> rays;
+    const PacketHits& hits;
+    /// The lanes that hit.
+    uint32_t hit_lanes;
+
+    [[nodiscard]] bool hit(uint32_t lane) const { return (hit_lanes >> lane & 1) != 0; }
 };
 
 /// The threads this machine runs at once; more would not render faster.
@@ -125,16 +142,14 @@ public:
     /// Radiance arriving at the camera along `ray`.
     [[nodiscard]] virtual Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const = 0;
 
-    /// Li() for a camera ray whose first hit the render has already found (`hit`, null for
-    /// a miss), tracing the camera rays of neighbouring pixels as one packet
-    /// (RenderScene::intersect_packet); the same radiance as Li(). An integrator that
-    /// overrides it says so with takes_first_hits(). The default calls Li().
-    [[nodiscard]] virtual Color Li_given_first_hit(const RenderScene& scene, const Ray& ray, const Hit* hit,
-                                                   TraceContext& context) const {
-        (void)hit;
-        return Li(scene, ray, context);
-    }
-    /// Whether the render should trace camera rays in packets for Li_given_first_hit().
+    /// Li() for each camera ray of a packet whose closest hits the render has already found:
+    /// lane k, traced with contexts[k] (its pixel's sampler, cone and first-hit record), gets
+    /// in radiance[k] what Li() gives it. An integrator that overrides it says so with
+    /// takes_first_hits(), and may trace more of the lanes' rays as packets. The default
+    /// calls Li() lane by lane.
+    virtual void Li_given_first_hits(const RenderScene& scene, const FirstHits& first, std::span<TraceContext> contexts,
+                                     std::span<Color> radiance) const;
+    /// Whether the render should trace camera rays in packets for Li_given_first_hits().
     [[nodiscard]] virtual bool takes_first_hits() const { return false; }
 
     /// One line for each part of `scene` this integrator ignores (shown before rendering).
@@ -163,11 +178,12 @@ private:
                    uint32_t index, uint32_t width, uint32_t height, TraceContext& context, CameraSample& sample) const;
     /// take_sample() for sample `index` of the `count` (at most RayPacket::kSize) pixels
     /// (x, y), (x + 1, y), ..., their camera rays traced as one packet; pixel x + k draws
-    /// from `samplers[k]`. Each sample, with its radiance, goes to `add(x, y, sample)`.
+    /// from `samplers[k]`. Each sample, with its radiance and (with `aovs`) its camera ray's
+    /// first hit, goes to `add(x, y, sample, first_hit)`, in the order of x.
     template <class AddSample>
     void take_packet_samples(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y, uint32_t count,
-                             uint32_t index, uint32_t width, uint32_t height, std::span<Sampler> samplers,
-                             FirstHit* first_hit, uint64_t& rays, const AddSample& add) const;
+                             uint32_t index, uint32_t width, uint32_t height, std::span<Sampler> samplers, bool aovs,
+                             uint64_t& rays, const AddSample& add) const;
 };
 
 }  // namespace glint
