@@ -19,7 +19,7 @@ const std::filesystem::path kSource(GLINT_SOURCE_DIR);
 
 /// The shadow ray Whitted's direct light casts from `si` toward `ls` (light above the surface).
 Ray whitted_shadow_ray(const SurfaceInteraction& si, const LightSample& ls) {
-    const Vec3 ng = si.front_face ? si.geometric_normal : -si.geometric_normal;
+    const Vec3 ng = facing_geometric_normal(si);
     return shadow_ray(offset_ray_origin(si.p, ng), ls, si.time);
 }
 
@@ -51,7 +51,7 @@ TEST(DeltaLightShadows, AnswerAsRenderSceneOccludedForEachLaneAndLight) {
                 const Ray shadow = whitted_shadow_ray(si, ls);
                 const std::optional<bool> known = shadows[k].occluded(i, shadow);
                 // A sphere's side turned from the light: see LeaveLightFromUnderTheSurface....
-                if (dot(ls.direction, si.front_face ? si.geometric_normal : -si.geometric_normal) < 0.0f) {
+                if (dot(ls.direction, facing_geometric_normal(si)) < 0.0f) {
                     EXPECT_FALSE(known.has_value());
                     continue;
                 }
@@ -84,7 +84,7 @@ TEST(DeltaLightShadows, LeaveLightFromUnderTheSurfaceToDirectLight) {
     for (uint32_t i = 0; i < scene.all_lights().size(); ++i) {
         if (!scene.all_lights()[i]->is_delta()) continue;
         const LightSample ls = scene.all_lights()[i]->sample(si.p, Vec2());
-        const Vec3 ng = si.front_face ? si.geometric_normal : -si.geometric_normal;
+        const Vec3 ng = facing_geometric_normal(si);
         ASSERT_LT(dot(ls.direction, ng), 0.0f);
         EXPECT_FALSE(shadows[0].occluded(i, whitted_shadow_ray(si, ls)).has_value());
         EXPECT_FALSE(shadows[0].occluded(i, shadow_ray(offset_ray_origin(si.p, -ng), ls, si.time)).has_value());

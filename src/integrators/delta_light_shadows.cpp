@@ -33,7 +33,7 @@ std::array<DeltaLightShadows, RayPacket::kSize> trace_delta_light_shadows(
             const auto k = uint32_t(std::countr_zero(active));
             const SurfaceInteraction& si = interactions[k];
             const LightSample ls = lights[i]->sample(si.p, Vec2());
-            const Vec3 ng = si.front_face ? si.geometric_normal : -si.geometric_normal;
+            const Vec3 ng = facing_geometric_normal(si);
             // Light from under the surface takes another shadow ray (direct light's "through").
             if (!(ls.pdf > 0.0f) || ls.radiance.is_black() || dot(ls.direction, ng) < 0.0f) continue;
             const Ray shadow = shadow_ray(offset_ray_origin(si.p, ng), ls, si.time);

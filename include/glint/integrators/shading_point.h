@@ -31,6 +31,12 @@ struct ShadingPoint {
     uint32_t medium = 0;
 };
 
+/// The hit's unit geometric normal on the side the ray came from (surfaces are two-sided):
+/// ShadingPoint::ng, and the side shadow rays leave from.
+[[nodiscard]] inline Vec3 facing_geometric_normal(const SurfaceInteraction& si) {
+    return si.front_face ? si.geometric_normal : -si.geometric_normal;
+}
+
 /// The per-vertex materials of a hit (si.blends_materials) blended by their weights. Kept
 /// apart from shading_point: the common hit on one material uses the scene's own
 /// `Material` and never constructs one (GCC 12 zero-fills an empty std::optional<Material>,
@@ -50,7 +56,7 @@ struct ShadingPoint {
     sp.wo = -normalize(ray.direction);
     // Shade on the side the ray arrived from (surfaces are two-sided).
     sp.n = si.front_face ? si.shading_normal : -si.shading_normal;
-    sp.ng = si.front_face ? si.geometric_normal : -si.geometric_normal;
+    sp.ng = facing_geometric_normal(si);
     if (m.is_dielectric()) {
         const bool inside = media.contains(sp.medium);
         sp.entering = inside ? false : (media.lost_entries() ? si.front_face : true);
