@@ -121,7 +121,7 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
 
 }  // namespace
 
-void add_objects(const ParamTable& root, BuildContext& context) {
+void add_objects(const ParamTable& root, const MoreObjects& more_objects, BuildContext& context) {
     ShapeLibrary library;
     for (const ParamTable* t : root.tables("shapes")) {
         const std::string& name = t->require_string("name");
@@ -133,6 +133,12 @@ void add_objects(const ParamTable& root, BuildContext& context) {
         t->reject_unknown_keys();
     }
     for (const ParamTable* t : root.tables("objects")) add_object(*t, library, context);
+    if (!more_objects) return;
+    while (const std::shared_ptr<const ParamTable> t = more_objects()) {
+        add_object(*t, library, context);
+        // What build_scene's last check does for the root's tables, before this one goes.
+        t->reject_unknown_keys_recursive();
+    }
 }
 
 }  // namespace glint

@@ -296,7 +296,8 @@ void read_light(const ParamTable& t, BuildContext& context) { chosen_type(t, lig
 
 }  // namespace
 
-LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& base_dir) {
+LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& base_dir,
+                        const MoreObjects& more_objects) {
     LoadedScene out;
     MeshCache meshes;
     BuildContext context(base_dir, out.scene, meshes, out.warnings);
@@ -321,7 +322,7 @@ LoadedScene build_scene(const ParamTable& root, const std::filesystem::path& bas
     for (const ParamTable* t : textures) read_texture(*t, context);
     for (const ParamTable* t : materials) read_material(*t, context);
     for (const ParamTable* t : lights) read_light(*t, context);
-    add_objects(root, context);
+    add_objects(root, more_objects, context);
     // Every builder rejected its own unknown keys; this catches tables none of them visited.
     root.reject_unknown_keys_recursive();
     // Legal but most likely not what was meant: the render would show only the background.

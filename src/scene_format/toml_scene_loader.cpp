@@ -1,5 +1,6 @@
 // The only translation unit that includes toml++ (it is heavy to compile): it turns TOML
-// text into a ParamTable tree and hands that to the scene builder.
+// text into a ParamTable tree and hands that to the scene builder, the `[[objects]]` one at
+// a time (toml_entries.h says why and how).
 
 #include "glint/scene_format/toml_scene_loader.h"
 
@@ -7,6 +8,7 @@
 #include "glint/scene_format/scene_builder.h"
 #include "glint/scene_format/source_excerpt.h"
 #include "glint/util/whole_file.h"
+#include "toml_entries.h"
 
 // toml++ compiled here, header-only (src/CMakeLists.txt says why), with floats read by
 // std::from_chars (exact, locale-free; GCC 12 has it) and without its writers.
@@ -31,22 +33,26 @@ namespace glint {
 
 namespace {
 
-using FileName = std::shared_ptr<const std::string>;
+/// Where a parsed part of the file lies in it: the file's name and the lines before the part.
+struct Origin {
+    std::shared_ptr<const std::string> file;
+    uint32_t lines_before = 0;
+};
 
-SourceLocation location(const toml::source_region& region, const FileName& file) {
-    return {file, region.begin.line, region.begin.column};
+SourceLocation location(const toml::source_region& region, const Origin& origin) {
+    return {origin.file, region.begin.line + origin.lines_before, region.begin.column};
 }
 
-std::shared_ptr<const ParamTable> convert_table(toml::table& table, const std::string& path, const FileName& file);
+std::shared_ptr<const ParamTable> convert_table(toml::table& table, const std::string& path, const Origin& origin);
 
 /// The ParamValue of `node`, which is named `path` in messages. Tables and arrays are
 /// emptied as they are converted, so that a large scene is never held twice: the toml++
 /// tree of 100,000 objects alone takes 240 MB.
-ParamValue convert(toml::node& node, const std::string& path, const FileName& file) {
-    const SourceLocation where = location(node.source(), file);
+ParamValue convert(toml::node& node, const std::string& path, const Origin& origin) {
+    const SourceLocation where = location(node.source(), origin);
     switch (node.type()) {
         case toml::node_type::table:
-            return {convert_table(*node.as_table(), path, file), where};
+            return {convert_table(*node.as_table(), path, origin), where};
         case toml::node_type::array: {
             ParamValue::Array elements;
             toml::array& array = *node.as_array();
@@ -57,7 +63,7 @@ ParamValue convert(toml::node& node, const std::string& path, const FileName& fi
                 // given one); tables keep theirs (ParamTable::path), and a date is refused by it.
                 const bool nested = element.is_table() || element.is_array();
                 const bool named = nested || element.is_date() || element.is_time() || element.is_date_time();
-                elements.push_back(convert(element, named ? path + "[" + std::to_string(i) + "]" : path, file));
+                elements.push_back(convert(element, named ? path + "[" + std::to_string(i) + "]" : path, origin));
                 if (nested) array.replace(array.cbegin() + std::ptrdiff_t(i), false);
             }
             array.clear();
@@ -76,33 +82,80 @@ ParamValue convert(toml::node& node, const std::string& path, const FileName& fi
     }
 }
 
-std::shared_ptr<const ParamTable> convert_table(toml::table& table, const std::string& path, const FileName& file) {
-    auto out = std::make_shared<ParamTable>(path, location(table.source(), file));
+std::shared_ptr<const ParamTable> convert_table(toml::table& table, const std::string& path, const Origin& origin) {
+    auto out = std::make_shared<ParamTable>(path, location(table.source(), origin));
     out->reserve(table.size());
     for (auto& [key, node] : table) {
         const std::string name(key.str());
-        out->add(name, location(key.source(), file), convert(node, path.empty() ? name : path + "." + name, file));
+        out->add(name, location(key.source(), origin), convert(node, path.empty() ? name : path + "." + name, origin));
     }
     table.clear();
     return out;
+}
+
+/// Thrown when a part of the file does not read on its own as toml_entries.h expects: the
+/// file is then parsed whole, which gives it its one meaning or finds its first error.
+struct ReadWhole {};
+
+toml::table parse_part(std::string_view text, const std::string& source_name) {
+    try {
+        return toml::parse(text, source_name);
+    } catch (const toml::parse_error&) {
+        throw ReadWhole{};
+    }
+}
+
+/// The file as the rest and then its `[[objects]]` one by one, each parsed, converted and
+/// built before the next is parsed. Throws ReadWhole.
+LoadedScene load_object_by_object(std::string_view text, const Origin& origin, const std::filesystem::path& base_dir) {
+    const TomlEntries split = split_toml_entries(text, "objects");
+    toml::table rest = parse_part(split.rest, *origin.file);
+    if (!split.entries.empty() && rest.contains("objects")) throw ReadWhole{};
+    const auto root = convert_table(rest, "", origin);
+    std::size_t next = 0;
+    try {
+        return build_scene(*root, base_dir, [&]() -> std::shared_ptr<const ParamTable> {
+            if (next == split.entries.size()) return nullptr;
+            const TomlEntry& entry = split.entries[next];
+            toml::table part = parse_part(entry.text, *origin.file);
+            toml::array* objects = part.size() == 1 ? part.get_as<toml::array>("objects") : nullptr;
+            if (!objects || objects->size() != 1 || !objects->front().is_table()) throw ReadWhole{};
+            return convert_table(*objects->front().as_table(), "objects[" + std::to_string(next++) + "]",
+                                 {origin.file, entry.first_line - 1});
+        });
+    } catch (const SceneError&) {
+        // Parsed whole, a syntax error anywhere came before any mistake in a value: the
+        // objects not read yet must parse for this mistake to be the file's first.
+        for (; next < split.entries.size(); ++next) (void)parse_part(split.entries[next].text, *origin.file);
+        throw;
+    }
+}
+
+/// The file as one toml++ tree, converted whole.
+LoadedScene load_whole(std::string_view text, const Origin& origin, const std::filesystem::path& base_dir) {
+    toml::table document;
+    try {
+        document = toml::parse(text, *origin.file);
+    } catch (const toml::parse_error& e) {
+        const SourceLocation where = location(e.source(), origin);
+        throw SceneError(where.to_string() + ": invalid TOML: " + std::string(e.description()) +
+                         source_excerpt(text, where.line, where.column));
+    }
+    const auto root = convert_table(document, "", origin);
+    return build_scene(*root, base_dir);
 }
 
 }  // namespace
 
 LoadedScene load_toml_scene_string(std::string_view text, const std::string& source_name,
                                    const std::filesystem::path& base_dir) {
-    const auto file = std::make_shared<const std::string>(source_name);
-    toml::table document;
+    const Origin origin{std::make_shared<const std::string>(source_name)};
     try {
-        document = toml::parse(text, source_name);
-    } catch (const toml::parse_error& e) {
-        const SourceLocation where = location(e.source(), file);
-        throw SceneError(where.to_string() + ": invalid TOML: " + std::string(e.description()) +
-                         source_excerpt(text, where.line, where.column));
-    }
-    try {
-        const auto root = convert_table(document, "", file);
-        return build_scene(*root, base_dir);
+        try {
+            return load_object_by_object(text, origin, base_dir);
+        } catch (const ReadWhole&) {
+            return load_whole(text, origin, base_dir);
+        }
     } catch (const LocatedSceneError& e) {
         if (!e.where().file || *e.where().file != source_name) throw;
         throw SceneError(e.what() + source_excerpt(text, e.where().line, e.where().column));
