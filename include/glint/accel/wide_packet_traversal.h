@@ -129,9 +129,13 @@ uint32_t traverse_packet_frustum(std::span<const WideNode> nodes, RayPacket& pac
             const WideNode& node = nodes[ref];
             __m256 enter;
             const __m256 hit = frustum.test(node, _mm256_set1_ps(tmax_bound * kWideBoxSlack), enter);
-            const __m256i order = _mm256_and_si256(
-                _mm256_srlv_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)), shift),
-                _mm256_set1_epi32(7));
+            // Closest hits take the children near to far by the octant's order; any-hit
+            // packets, like single any-hit rays, fare better in slot order (leaves first).
+            const __m256i order =
+                AnyHit ? _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)
+                       : _mm256_and_si256(
+                             _mm256_srlv_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)), shift),
+                             _mm256_set1_epi32(7));
             const auto mask = static_cast<uint32_t>(_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, order)));
             _mm256_store_ps(t_enter, _mm256_permutevar8x32_ps(enter, order));
             _mm256_store_si256(
@@ -142,7 +146,7 @@ uint32_t traverse_packet_frustum(std::span<const WideNode> nodes, RayPacket& pac
                 const __m256 tmax = _mm256_load_ps(packet.tmax), node_lanes = lane_vector(lanes & live);
                 for (uint32_t m = mask; m; m &= m - 1) {
                     const auto k = static_cast<uint32_t>(std::countr_zero(m));
-                    const uint32_t slot = (node.order[k] >> frustum.order_shift) & 7;
+                    const uint32_t slot = AnyHit ? k : (node.order[k] >> frustum.order_shift) & 7;
                     uint32_t entered;
                     packet_slab_test(node, slot, r, tmax, node_lanes, entered);
                     if (entered != 0) near_to_far[count++] = {child[k], t_enter[k], entered};
@@ -152,8 +156,13 @@ uint32_t traverse_packet_frustum(std::span<const WideNode> nodes, RayPacket& pac
                 reached_leaf = false;
                 break;
             }
-            // Push the others far to near, descend into the nearest.
-            for (uint32_t k = count - 1; k > 0; --k) stack[top++] = near_to_far[k];
+            // Descend into the first, push the others: far to near (any-hit: the highest
+            // slot to be taken next).
+            if constexpr (AnyHit) {
+                for (uint32_t k = 1; k < count; ++k) stack[top++] = near_to_far[k];
+            } else {
+                for (uint32_t k = count - 1; k > 0; --k) stack[top++] = near_to_far[k];
+            }
             ref = near_to_far[0].ref;
             lanes = near_to_far[0].lanes;
         }
