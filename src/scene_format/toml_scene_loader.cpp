@@ -46,8 +46,8 @@ SourceLocation location(const toml::source_region& region, const Origin& origin)
 std::shared_ptr<const ParamTable> convert_table(toml::table& table, const std::string& path, const Origin& origin);
 
 /// The ParamValue of `node`, which is named `path` in messages. Tables and arrays are
-/// emptied as they are converted, so that a large scene is never held twice: the toml++
-/// tree of 100,000 objects alone takes 240 MB.
+/// emptied as they are converted, so that a file read whole is never held twice (toml++'s
+/// tree of 100,000 objects, read whole, takes 240 MB).
 ParamValue convert(toml::node& node, const std::string& path, const Origin& origin) {
     const SourceLocation where = location(node.source(), origin);
     switch (node.type()) {
