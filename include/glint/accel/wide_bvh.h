@@ -103,10 +103,11 @@ private:
     /// traverse<true>: the first hit in any order, children pushed without their distances.
     template <typename IntersectLeaf, typename Count>
     bool traverse_any_hit(Ray& ray, IntersectLeaf& intersect_leaf, const Count& count) const;
-    /// The same test with the children in the ray octant's front-to-back order: bit k of the
-    /// mask, child[k] and t_enter[k] are the k-th child in that order.
-    [[nodiscard]] static uint32_t intersect_node_ordered(const WideNode& node, const WideRay& r, float tmin, float tmax,
-                                                         uint32_t* child, float* t_enter);
+    /// The same test with the children in the ray octant's back-to-front order: bit j of the
+    /// mask, child[j] and t_enter[j] are the (7 - j)-th child in its front-to-back order, so
+    /// that pushing the hit lanes from the lowest up leaves the nearest on top of the stack.
+    [[nodiscard]] static uint32_t intersect_node_far_to_near(const WideNode& node, const WideRay& r, float tmin,
+                                                             float tmax, uint32_t* child, float* t_enter);
 
     std::vector<WideNode> nodes_;
     std::vector<WideLeaf> leaves_;
@@ -183,17 +184,17 @@ inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, 
 #endif
 }
 
-inline uint32_t WideBvh::intersect_node_ordered(const WideNode& node, const WideRay& r, float tmin, float tmax,
-                                                uint32_t* child, float* t_enter) {
+inline uint32_t WideBvh::intersect_node_far_to_near(const WideNode& node, const WideRay& r, float tmin, float tmax,
+                                                    uint32_t* child, float* t_enter) {
 #if defined(__AVX2__)
     __m256 enter;
     const __m256 hit = wide_slab_test(node, r, tmin, tmax, enter);
-    const __m256i order =
-        _mm256_and_si256(_mm256_srlv_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)),
-                                           _mm256_set1_epi32(static_cast<int>(r.order_shift))),
-                         _mm256_set1_epi32(7));
-    _mm256_storeu_ps(t_enter, _mm256_permutevar8x32_ps(enter, order));
-    _mm256_storeu_si256(
+    const __m256i reversed = _mm256_permutevar8x32_epi32(
+        _mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)), _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0));
+    const __m256i order = _mm256_and_si256(
+        _mm256_srlv_epi32(reversed, _mm256_set1_epi32(static_cast<int>(r.order_shift))), _mm256_set1_epi32(7));
+    _mm256_store_ps(t_enter, _mm256_permutevar8x32_ps(enter, order));
+    _mm256_store_si256(
         reinterpret_cast<__m256i*>(child),
         _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)), order));
     return static_cast<uint32_t>(_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, order)));
@@ -201,11 +202,11 @@ inline uint32_t WideBvh::intersect_node_ordered(const WideNode& node, const Wide
     float slot_enter[WideNode::kWidth];
     const uint32_t slot_mask = intersect_node<true>(node, r, tmin, tmax, slot_enter);
     uint32_t mask = 0;
-    for (uint32_t k = 0; k < WideNode::kWidth; ++k) {
-        const uint32_t slot = (node.order[k] >> r.order_shift) & 7;
-        child[k] = node.child[slot];
-        t_enter[k] = slot_enter[slot];
-        mask |= ((slot_mask >> slot) & 1) << k;
+    for (uint32_t j = 0; j < WideNode::kWidth; ++j) {
+        const uint32_t slot = (node.order[WideNode::kWidth - 1 - j] >> r.order_shift) & 7;
+        child[j] = node.child[slot];
+        t_enter[j] = slot_enter[slot];
+        mask |= ((slot_mask >> slot) & 1) << j;
     }
     return mask;
 #endif
@@ -217,54 +218,64 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, const Count& co
     if constexpr (AnyHit) return traverse_any_hit(ray, intersect_leaf, count);
     const WideRay r(ray);
     const WideNode* const nodes = nodes_.data();
-    struct Entry {
-        uint32_t ref;
-        float t_enter;
-    };
-    // Each wide level leaves at most seven entries behind, and a wide tree is no deeper
-    // than the binary one it collapses.
-    constexpr int kStackSize = 640;
-    static_assert(kStackSize >= 7 * kMaxBinaryBvhDepth + 1);
-    Entry stack[kStackSize];
+    // A stack of references and one of the distances where the ray enters them, so that
+    // both can be pushed by compressing a register. Each wide level leaves at most seven
+    // entries behind (a push may write eight), and a wide tree is no deeper than the binary
+    // one it collapses.
+    constexpr int kStackSize = 7 * kMaxBinaryBvhDepth + 8;
+    uint32_t stack_ref[kStackSize];
+    float stack_enter[kStackSize];
     int top = 0;
-    stack[top++] = {0, ray.tmin};
+    stack_ref[top] = 0;
+    stack_enter[top++] = ray.tmin;
     bool hit = false;
     alignas(32) float t_enter[WideNode::kWidth];
     alignas(32) uint32_t child[WideNode::kWidth];
     while (top > 0) {
-        const Entry entry = stack[--top];
-        if (entry.t_enter > ray.tmax) continue;  // behind a hit found since the push
-        uint32_t ref = entry.ref;
+        --top;
+        if (stack_enter[top] > ray.tmax) continue;  // behind a hit found since the push
+        uint32_t ref = stack_ref[top];
         bool reached_leaf = true;
         while (!(ref & WideNode::kLeafBit)) {
             const WideNode& node = nodes[ref];
             count.node();
-            uint32_t mask = intersect_node_ordered(node, r, ray.tmin, ray.tmax, child, t_enter);
+            const uint32_t mask = intersect_node_far_to_near(node, r, ray.tmin, ray.tmax, child, t_enter);
             if (mask == 0) {
                 reached_leaf = false;
                 break;
             }
-            const auto nearest = static_cast<uint32_t>(std::countr_zero(mask));
-            mask &= mask - 1;
-            if (mask == 0) {
+            const auto nearest = static_cast<uint32_t>(31 - std::countl_zero(mask));
+            const uint32_t others = mask & ~(1u << nearest);
+            if (others == 0) {
                 ref = child[nearest];
                 continue;
             }
-            if ((mask & (mask - 1)) == 0) {
+            if ((others & (others - 1)) == 0) {
                 // Two children hit (the common case): their entry distances order them exactly.
-                const auto other = static_cast<uint32_t>(std::countr_zero(mask));
+                const auto other = static_cast<uint32_t>(std::countr_zero(others));
                 const bool swap = t_enter[other] < t_enter[nearest];
                 const uint32_t near = swap ? other : nearest, far = swap ? nearest : other;
-                stack[top++] = {child[far], t_enter[far]};
+                stack_ref[top] = child[far];
+                stack_enter[top++] = t_enter[far];
                 ref = child[near];
                 continue;
             }
             // Push the others far to near (the octant's order approximates the distance
             // order), descend into the nearest.
-            for (; mask; mask &= ~(1u << (31 - std::countl_zero(mask)))) {
-                const auto k = static_cast<uint32_t>(31 - std::countl_zero(mask));
-                stack[top++] = {child[k], t_enter[k]};
+#if defined(__AVX512VL__)
+            const auto lanes = static_cast<__mmask8>(others);
+            _mm256_storeu_si256(
+                reinterpret_cast<__m256i*>(stack_ref + top),
+                _mm256_maskz_compress_epi32(lanes, _mm256_load_si256(reinterpret_cast<const __m256i*>(child))));
+            _mm256_storeu_ps(stack_enter + top, _mm256_maskz_compress_ps(lanes, _mm256_load_ps(t_enter)));
+            top += std::popcount(others);
+#else
+            for (uint32_t m = others; m; m &= m - 1) {
+                const auto j = static_cast<uint32_t>(std::countr_zero(m));
+                stack_ref[top] = child[j];
+                stack_enter[top++] = t_enter[j];
             }
+#endif
             ref = child[nearest];
         }
         if (!reached_leaf) continue;
