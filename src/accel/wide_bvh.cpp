@@ -21,28 +21,12 @@ public:
         if (r.is_leaf()) {
             slots[used++] = root;
         } else {
-            slots[used++] = r.index;
-            slots[used++] = r.index + 1;
+            distribute(r.index, plan_[root].split[WideNode::kWidth - 1], slots, used);
+            distribute(r.index + 1, WideNode::kWidth - plan_[root].split[WideNode::kWidth - 1], slots, used);
         }
-        // Open the inner child with the largest surface area (the one most rays enter)
-        // until all eight slots are used.
-        while (used < WideNode::kWidth) {
-            int best = -1;
-            float best_area = -1.0f;
-            for (uint32_t i = 0; i < used; ++i) {
-                const BvhNode& n = binary_.nodes[slots[i]];
-                if (!n.is_leaf() && n.bounds.half_area() > best_area) {
-                    best_area = n.bounds.half_area();
-                    best = int(i);
-                }
-            }
-            if (best < 0) break;
-            const uint32_t first = binary_.nodes[slots[best]].index;
-            slots[best] = first;
-            slots[used++] = first + 1;
-        }
-        // Leaves first, then the inner children side by side: a node's leaves and its
-        // child nodes each lie together in memory, which the hardware prefetcher likes.
+        // Leaves in the low slots, where any-hit rays start; a node's leaves and its child
+        // nodes each lie together in memory, which the hardware prefetcher likes.
+        std::stable_partition(slots, slots + used, [&](uint32_t k) { return binary_.nodes[k].is_leaf(); });
         uint32_t inner = 0;
         for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
             const Bounds3 b = i < used ? binary_.nodes[slots[i]].bounds : Bounds3{};
@@ -70,7 +54,68 @@ public:
             if (!binary_.nodes[slots[i]].is_leaf()) fill(nodes_[index].child[i], slots[i]);
     }
 
+    /// Plans the collapse that minimises the summed surface area of the wide nodes (the
+    /// expected number of node visits; the leaves are the binary tree's either way): the
+    /// dynamic program of Ylitie, Karras and Laine 2017 ("Efficient Incoherent Ray
+    /// Traversal on GPUs Through Compressed Wide BVHs", §3), without its leaf merging.
+    void plan() {
+        const size_t n = binary_.nodes.size();
+        plan_.assign(n, {});
+        // build_binary_bvh numbers children after their parent, so walking backwards meets
+        // them first.
+        for (size_t k = n; k-- > 0;) {
+            const BvhNode& node = binary_.nodes[k];
+            Plan& p = plan_[k];
+            if (node.is_leaf()) continue;  // one slot, cost 0 (leaves are the same in any collapse)
+            const Plan& a = plan_[node.index];
+            const Plan& b = plan_[node.index + 1];
+            // best[j - 1]: the two subtrees in at most j slots, each taking at least one.
+            float best[WideNode::kWidth];
+            uint8_t split[WideNode::kWidth];
+            for (uint32_t j = 1; j <= WideNode::kWidth; ++j) {
+                best[j - 1] = std::numeric_limits<float>::infinity();
+                split[j - 1] = 0;
+                for (uint32_t left = 1; left < j; ++left) {
+                    const float c = a.cost[left - 1] + b.cost[j - left - 1];
+                    if (c < best[j - 1]) {
+                        best[j - 1] = c;
+                        split[j - 1] = static_cast<uint8_t>(left);
+                    }
+                }
+            }
+            // In one slot the node is a wide node of its own: its area, plus its subtrees
+            // spread over eight slots.
+            p.cost[0] = node.bounds.half_area() + best[WideNode::kWidth - 1];
+            p.split[0] = 0;
+            for (uint32_t j = 2; j <= WideNode::kWidth; ++j) {
+                const bool open = best[j - 1] < p.cost[j - 2];
+                p.cost[j - 1] = open ? best[j - 1] : p.cost[j - 2];
+                p.split[j - 1] = open ? split[j - 1] : p.split[j - 2];
+            }
+            p.split[WideNode::kWidth - 1] = split[WideNode::kWidth - 1];
+        }
+    }
+
 private:
+    /// Cost and choice of binary node k in at most j + 1 slots: split[j] slots for its first
+    /// child and the rest for the second, or 0 to keep it in one slot.
+    struct Plan {
+        float cost[WideNode::kWidth] = {};
+        uint8_t split[WideNode::kWidth] = {};
+    };
+
+    /// Appends the slots binary node `k` takes when given `count` of them by the plan.
+    void distribute(uint32_t k, uint32_t count, uint32_t* slots, uint32_t& used) const {
+        const BvhNode& node = binary_.nodes[k];
+        const uint32_t left = node.is_leaf() ? 0 : plan_[k].split[count - 1];
+        if (left == 0) {
+            slots[used++] = k;
+            return;
+        }
+        distribute(node.index, left, slots, used);
+        distribute(node.index + 1, count - left, slots, used);
+    }
+
     /// For each ray octant, the used slots sorted by how far along the octant's diagonal
     /// their centres lie (a ray heading that way meets them in about that order), then the
     /// unused ones.
@@ -96,6 +141,7 @@ private:
     const BinaryBvh& binary_;
     std::vector<WideNode>& nodes_;
     std::vector<WideLeaf>& leaves_;
+    std::vector<Plan> plan_;
 };
 
 }  // namespace
@@ -114,7 +160,9 @@ void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildCon
     nodes_.reserve(binary_leaves);
     leaves_.reserve(binary_leaves);
     nodes_.emplace_back();
-    Collapser(binary, nodes_, leaves_).fill(0, 0);
+    Collapser collapser(binary, nodes_, leaves_);
+    collapser.plan();
+    collapser.fill(0, 0);
     nodes_.shrink_to_fit();
     order_ = std::move(binary.order);
 }
