@@ -121,6 +121,8 @@ struct Record {
     double glint = 0.0, embree = 0.0;  ///< Mrays/s, or build ms
     double glint_bytes = 0.0, embree_bytes = 0.0;
     Checksum glint_sum, embree_sum;
+    /// Glint's wide nodes visited and triangles tested per ray (single-ray sets only).
+    double nodes_per_ray = 0.0, triangles_per_ray = 0.0;
 };
 
 class MeshBench {
@@ -218,6 +220,21 @@ public:
         r.embree = mrays / median(embree_ms);
         r.glint_sum = checksum(glint_hits);
         r.embree_sum = checksum(embree_hits);
+        if (!set.packets) {
+            // Counted once, outside the timed runs, through the traversal the viewer's
+            // heatmaps use (the same code with a counting policy).
+            TraversalStats stats;
+            for (const BenchRay& b : rays) {
+                Ray ray = to_glint(b);
+                Hit hit;
+                if (query == Query::Any)
+                    (void)mesh.occluded_counted(ray, stats);
+                else
+                    mesh.intersect_counted(ray, hit, stats);
+            }
+            r.nodes_per_ray = double(stats.nodes) / double(rays.size());
+            r.triangles_per_ray = double(stats.primitives) / double(rays.size());
+        }
         return r;
     }
 
@@ -246,9 +263,12 @@ void print_json(const std::vector<Record>& records) {
                        R"("glint_bytes_per_tri": {:.2f}, "embree_bytes_per_tri": {:.2f}}})",
                        r.mesh, r.threads, r.glint, r.embree, r.glint_bytes, r.embree_bytes);
         else
-            fmt::print(R"(  {{"mesh": "{}", "rays": "{}", "threads": {}, "glint_mrays": {:.4f}, "embree_mrays": {:.4f}, )"
-                       R"("glint_hits": {}, "embree_hits": {}}})",
-                       r.mesh, r.rays, r.threads, r.glint, r.embree, r.glint_sum.hits, r.embree_sum.hits);
+            fmt::print(
+                R"(  {{"mesh": "{}", "rays": "{}", "threads": {}, "glint_mrays": {:.4f}, "embree_mrays": {:.4f}, )"
+                R"("glint_hits": {}, "embree_hits": {}, "glint_nodes_per_ray": {:.2f}, )"
+                R"("glint_triangles_per_ray": {:.2f}}})",
+                r.mesh, r.rays, r.threads, r.glint, r.embree, r.glint_sum.hits, r.embree_sum.hits, r.nodes_per_ray,
+                r.triangles_per_ray);
         fmt::print("{}\n", i + 1 < records.size() ? "," : "");
     }
     fmt::print("]\n");
@@ -292,10 +312,15 @@ int main(int argc, char** argv) {
                     const Record r = bench.trace(ray_set(set), t);
                     records.push_back(r);
                     if (json) continue;
-                    fmt::print("  {:<10} {:>7} rays  {} thr  glint {:8.2f} Mrays/s  embree {:8.2f} Mrays/s  ratio {:.2f}"
-                               "  (hits {} / {}, sum t {:.6g} / {:.6g})\n",
-                               set, bench.ray_count(set), t, r.glint, r.embree, r.glint / r.embree, r.glint_sum.hits,
-                               r.embree_sum.hits, r.glint_sum.t_sum, r.embree_sum.t_sum);
+                    fmt::print(
+                        "  {:<10} {:>7} rays  {} thr  glint {:8.2f} Mrays/s  embree {:8.2f} Mrays/s  ratio {:.2f}"
+                        "  (hits {} / {}, sum t {:.6g} / {:.6g})",
+                        set, bench.ray_count(set), t, r.glint, r.embree, r.glint / r.embree, r.glint_sum.hits,
+                        r.embree_sum.hits, r.glint_sum.t_sum, r.embree_sum.t_sum);
+                    if (r.nodes_per_ray > 0.0)
+                        fmt::print("  glint per ray: {:.1f} nodes, {:.1f} triangles", r.nodes_per_ray,
+                                   r.triangles_per_ray);
+                    fmt::print("\n");
                 }
             for (const Record& b : builds) {
                 records.push_back(b);
