@@ -21,8 +21,8 @@ public:
         if (r.is_leaf()) {
             slots[used++] = root;
         } else {
-            distribute(r.index, plan_[root].split[WideNode::kWidth - 1], slots, used);
-            distribute(r.index + 1, WideNode::kWidth - plan_[root].split[WideNode::kWidth - 1], slots, used);
+            distribute(r.index, plan_[root].own_split, slots, used);
+            distribute(r.index + 1, WideNode::kWidth - plan_[root].own_split, slots, used);
         }
         // Leaves in the low slots, where any-hit rays start; a node's leaves and its child
         // nodes each lie together in memory, which the hardware prefetcher likes.
@@ -69,7 +69,8 @@ public:
             if (node.is_leaf()) continue;  // one slot, cost 0 (leaves are the same in any collapse)
             const Plan& a = plan_[node.index];
             const Plan& b = plan_[node.index + 1];
-            // best[j - 1]: the two subtrees in at most j slots, each taking at least one.
+            // best[j - 1]: the two subtrees in at most j slots, each taking at least one (so
+            // at most seven).
             float best[WideNode::kWidth];
             uint8_t split[WideNode::kWidth];
             for (uint32_t j = 1; j <= WideNode::kWidth; ++j) {
@@ -85,23 +86,26 @@ public:
             }
             // In one slot the node is a wide node of its own: its area, plus its subtrees
             // spread over eight slots.
+            p.own_split = split[WideNode::kWidth - 1];
             p.cost[0] = node.bounds.half_area() + best[WideNode::kWidth - 1];
             p.split[0] = 0;
-            for (uint32_t j = 2; j <= WideNode::kWidth; ++j) {
+            for (uint32_t j = 2; j < WideNode::kWidth; ++j) {
                 const bool open = best[j - 1] < p.cost[j - 2];
                 p.cost[j - 1] = open ? best[j - 1] : p.cost[j - 2];
                 p.split[j - 1] = open ? split[j - 1] : p.split[j - 2];
             }
-            p.split[WideNode::kWidth - 1] = split[WideNode::kWidth - 1];
         }
     }
 
 private:
-    /// Cost and choice of binary node k in at most j + 1 slots: split[j] slots for its first
-    /// child and the rest for the second, or 0 to keep it in one slot.
+    /// A binary node's cost and choice in at most j + 1 slots of a wide node above it (a
+    /// parent leaves at least one of its eight to the other subtree): split[j] slots for its
+    /// first child and the rest for the second, or 0 to keep it in one slot. own_split is
+    /// the first child's share of the eight slots when the node is a wide node of its own.
     struct Plan {
-        float cost[WideNode::kWidth] = {};
-        uint8_t split[WideNode::kWidth] = {};
+        float cost[WideNode::kWidth - 1] = {};
+        uint8_t split[WideNode::kWidth - 1] = {};
+        uint8_t own_split = 0;
     };
 
     /// Appends the slots binary node `k` takes when given `count` of them by the plan.
