@@ -47,6 +47,11 @@ struct alignas(32) WideNode {
 };
 static_assert(sizeof(WideNode) == 256);
 
+/// Entries a traversal stack of a WideBvh needs: each wide level leaves at most seven
+/// children behind, a wide tree is no deeper than the binary one it collapses, and a
+/// compressed push may write a whole register of eight past the top.
+inline constexpr int kWideStackSize = 7 * kMaxBinaryBvhDepth + WideNode::kWidth;
+
 /// A leaf: `count` entries of primitive_order() starting at `first`.
 struct WideLeaf {
     uint32_t first = 0;
@@ -222,12 +227,9 @@ bool WideBvh::traverse(Ray& ray, IntersectLeaf&& intersect_leaf, const Count& co
     const WideRay r(ray);
     const WideNode* const nodes = nodes_.data();
     // A stack of references and one of the distances where the ray enters them, so that
-    // both can be pushed by compressing a register. Each wide level leaves at most seven
-    // entries behind (a push may write eight), and a wide tree is no deeper than the binary
-    // one it collapses.
-    constexpr int kStackSize = 7 * kMaxBinaryBvhDepth + 8;
-    uint32_t stack_ref[kStackSize];
-    float stack_enter[kStackSize];
+    // both can be pushed by compressing a register.
+    uint32_t stack_ref[kWideStackSize];
+    float stack_enter[kWideStackSize];
     int top = 0;
     stack_ref[top] = 0;
     stack_enter[top++] = ray.tmin;
@@ -291,9 +293,7 @@ template <typename IntersectLeaf, typename Count>
 bool WideBvh::traverse_any_hit(Ray& ray, IntersectLeaf& intersect_leaf, const Count& count) const {
     const WideRay r(ray);
     const WideNode* const nodes = nodes_.data();
-    // Each wide level leaves at most seven references behind; a push may write eight.
-    constexpr int kStackSize = 7 * kMaxBinaryBvhDepth + 8;
-    uint32_t stack[kStackSize];
+    uint32_t stack[kWideStackSize];
     int top = 0;
     uint32_t ref = 0;
     for (;;) {

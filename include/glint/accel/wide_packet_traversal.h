@@ -41,8 +41,7 @@ uint32_t traverse_packet_lanes(std::span<const WideNode> nodes, RayPacket& packe
         __m256 enter;
         uint32_t ref;
     };
-    constexpr int kStackSize = 7 * kMaxBinaryBvhDepth + 1;
-    Entry stack[kStackSize];
+    Entry stack[kWideStackSize];
     int top = 0;
     stack[top++] = {_mm256_blendv_ps(not_entered, r.tmin, lane_vector(packet.active)), 0};
     // AnyHit: a lane that has hit gets tmax = -inf, which no box test passes.
@@ -110,8 +109,7 @@ uint32_t traverse_packet_frustum(std::span<const WideNode> nodes, RayPacket& pac
         float enter;
         uint32_t lanes;  ///< the lanes that enter its box
     };
-    constexpr int kStackSize = 7 * kMaxBinaryBvhDepth + 1;
-    Entry stack[kStackSize];
+    Entry stack[kWideStackSize];
     int top = 0;
     uint32_t live = packet.active, hit_lanes = 0;
     stack[top++] = {0, -kInfinity, live};
@@ -131,16 +129,19 @@ uint32_t traverse_packet_frustum(std::span<const WideNode> nodes, RayPacket& pac
             const __m256 hit = frustum.test(node, _mm256_set1_ps(tmax_bound * kWideBoxSlack), enter);
             // Closest hits take the children near to far by the octant's order; any-hit
             // packets, like single any-hit rays, fare better in slot order (leaves first).
-            const __m256i order =
-                AnyHit ? _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)
-                       : _mm256_and_si256(
-                             _mm256_srlv_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)), shift),
-                             _mm256_set1_epi32(7));
-            const auto mask = static_cast<uint32_t>(_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, order)));
-            _mm256_store_ps(t_enter, _mm256_permutevar8x32_ps(enter, order));
-            _mm256_store_si256(
-                reinterpret_cast<__m256i*>(child),
-                _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)), order));
+            __m256 hit_ordered = hit, enter_ordered = enter;
+            __m256i child_ordered = _mm256_load_si256(reinterpret_cast<const __m256i*>(node.child));
+            if constexpr (!AnyHit) {
+                const __m256i order = _mm256_and_si256(
+                    _mm256_srlv_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)), shift),
+                    _mm256_set1_epi32(7));
+                hit_ordered = _mm256_permutevar8x32_ps(hit, order);
+                enter_ordered = _mm256_permutevar8x32_ps(enter, order);
+                child_ordered = _mm256_permutevar8x32_epi32(child_ordered, order);
+            }
+            const auto mask = static_cast<uint32_t>(_mm256_movemask_ps(hit_ordered));
+            _mm256_store_ps(t_enter, enter_ordered);
+            _mm256_store_si256(reinterpret_cast<__m256i*>(child), child_ordered);
             uint32_t count = 0;
             if (mask != 0) {
                 const __m256 tmax = _mm256_load_ps(packet.tmax), node_lanes = lane_vector(lanes & live);
