@@ -9,13 +9,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace glint {
 namespace {
 
 /// Depth of the deepest leaf below `node` (the root has depth 0).
-int deepest_leaf(const std::vector<BvhNode>& nodes, uint32_t node, int depth) {
+int deepest_leaf(std::span<const BvhNode> nodes, uint32_t node, int depth) {
     const BvhNode& n = nodes[node];
     if (n.is_leaf()) return depth;
     return std::max(deepest_leaf(nodes, n.index, depth + 1), deepest_leaf(nodes, n.index + 1, depth + 1));

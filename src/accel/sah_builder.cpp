@@ -181,7 +181,7 @@ struct BinMapping {
 
 class Builder {
 public:
-    Builder(std::vector<PrimRef>& refs, const BvhBuildConfig& config, std::vector<BvhNode>& nodes)
+    Builder(LargeArray<PrimRef>& refs, const BvhBuildConfig& config, LargeArray<BvhNode>& nodes)
         : refs_(refs), config_(config), nodes_(nodes) {}
 
     void build(uint32_t node_index, uint32_t begin, uint32_t end, int depth) {
@@ -319,9 +319,9 @@ private:
         return true;
     }
 
-    std::vector<PrimRef>& refs_;
+    LargeArray<PrimRef>& refs_;
     const BvhBuildConfig& config_;
-    std::vector<BvhNode>& nodes_;
+    LargeArray<BvhNode>& nodes_;
     std::atomic<uint32_t> node_count_{1};
 };
 
@@ -332,7 +332,7 @@ BinaryBvh build_binary_bvh(std::span<const Bounds3> primitive_bounds, const BvhB
         throw std::invalid_argument("BvhBuildConfig::bin_count must be in [2, 64]");
     if (config.max_leaf_size == 0) throw std::invalid_argument("BvhBuildConfig::max_leaf_size must be positive");
     BinaryBvh bvh;
-    std::vector<PrimRef> refs;
+    LargeArray<PrimRef> refs;
     refs.reserve(primitive_bounds.size());
     for (uint32_t i = 0; i < primitive_bounds.size(); ++i)
         if (!primitive_bounds[i].empty()) refs.emplace_back(primitive_bounds[i], i);

@@ -10,7 +10,7 @@ namespace {
 /// Turns binary nodes into wide ones, depth first.
 class Collapser {
 public:
-    Collapser(const BinaryBvh& binary, std::vector<WideNode>& nodes, std::vector<WideLeaf>& leaves)
+    Collapser(const BinaryBvh& binary, std::vector<WideNode>& nodes, LargeArray<WideLeaf>& leaves)
         : binary_(binary), nodes_(nodes), leaves_(leaves) {}
 
     /// Fills wide node `index` with the subtree of binary node `root`.
@@ -144,8 +144,8 @@ private:
 
     const BinaryBvh& binary_;
     std::vector<WideNode>& nodes_;
-    std::vector<WideLeaf>& leaves_;
-    std::vector<Plan> plan_;
+    LargeArray<WideLeaf>& leaves_;
+    LargeArray<Plan> plan_;
 };
 
 }  // namespace

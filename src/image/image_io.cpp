@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <system_error>
 
@@ -28,6 +29,9 @@ namespace glint {
 namespace {
 
 bool is_float_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
+
+/// A display value in [0, 1] as the nearest of 256 levels, as OpenImageIO quantises; NaN as 0.
+uint8_t display_byte(float v) { return uint8_t(v > 0.0f ? std::lround(std::min(v, 1.0f) * 255.0f) : 0); }
 
 /// Portable float map (PFM): "PF" header, width height, -1.0 (little-endian), then RGB float
 /// rows from the bottom up. OpenImageIO 2.4 (Debian 12) reads PFM but has no writer for it.
@@ -159,37 +163,50 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
     // EXR keeps every named channel; the other formats take R, G, B.
     const bool named = ext == ".exr" && image.channel_names.size() == std::size_t(image.channels);
     const int channels = named ? image.channels : std::min(image.channels, 3);
-    std::vector<float> data(std::size_t(image.width) * image.height * channels);
+    const std::size_t pixel_count = std::size_t(image.width) * image.height;
+    // PNG takes the 8-bit values straight from the conversion; the other formats take floats
+    // (OpenImageIO quantises for JPEG and TIFF). Neither buffer is zeroed first: the
+    // parallel loop writes every value, and its threads share the first touch of each page.
+    const bool png = ext == ".png";
+    const auto data = png ? nullptr : std::make_unique_for_overwrite<float[]>(pixel_count * channels);
+    const auto bytes = png ? std::make_unique_for_overwrite<uint8_t[]>(pixel_count * channels) : nullptr;
     const float gain = std::exp2(options.exposure);
     // Pixel by pixel, in parallel: the sRGB curve's powf for every value of a full-HD frame
     // is tens of milliseconds on one thread.
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, std::size_t(image.width) * image.height, 1u << 14),
-        [&](const tbb::blocked_range<std::size_t>& range) {
-            for (std::size_t p = range.begin(); p < range.end(); ++p) {
-                const float* in = &image.pixels[p * image.channels];
-                float* out = &data[p * channels];
-                if (keep_linear) {
-                    std::copy(in, in + channels, out);
-                } else if (channels == 3) {
-                    const Color display = apply_tone_curve(options.tone_curve, Color(in[0], in[1], in[2]) * gain);
-                    for (int c = 0; c < 3; ++c) out[c] = linear_to_srgb(display[c]);
-                } else {
-                    for (int c = 0; c < channels; ++c)
-                        out[c] = linear_to_srgb(apply_tone_curve(options.tone_curve, Color(in[c] * gain)).r);
-                }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixel_count, 1u << 14), [&](const auto& range) {
+        for (std::size_t p = range.begin(); p < range.end(); ++p) {
+            const float* in = &image.pixels[p * image.channels];
+            const std::size_t first = p * channels;
+            if (keep_linear) {
+                std::copy(in, in + channels, &data[first]);
+                continue;
             }
-        });
+            float display[3];
+            if (channels == 3) {
+                const Color toned = apply_tone_curve(options.tone_curve, Color(in[0], in[1], in[2]) * gain);
+                for (int c = 0; c < 3; ++c) display[c] = linear_to_srgb(toned[c]);
+            } else {
+                for (int c = 0; c < channels; ++c)
+                    display[c] = linear_to_srgb(apply_tone_curve(options.tone_curve, Color(in[c] * gain)).r);
+            }
+            for (int c = 0; c < channels; ++c) {
+                if (png)
+                    bytes[first + c] = display_byte(display[c]);
+                else
+                    data[first + c] = display[c];
+            }
+        }
+    });
 
     const std::filesystem::path tmp = temporary_path_for(path);
     std::string error;
     if (ext == ".pfm") {
-        std::vector<float> rgb(std::size_t(image.width) * image.height * 3);
-        for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
+        std::vector<float> rgb(pixel_count * 3);
+        for (std::size_t p = 0; p < pixel_count; ++p)
             for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = data[p * channels + std::min(c, channels - 1)];
         if (!write_pfm(tmp, image, rgb)) error = "cannot write image: write failed";
     } else if (ext == ".png") {
-        error = write_png(tmp, image.width, image.height, channels, data.data());
+        error = write_png(tmp, image.width, image.height, channels, bytes.get());
     } else {
         // Only EXR keeps where the pixels lie in a frame, and text beside them.
         const bool exr = ext == ".exr";
@@ -197,7 +214,7 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
         const codec::PixelsToWrite pixels{image.width,
                                           image.height,
                                           channels,
-                                          data.data(),
+                                          data.get(),
                                           keep_linear,
                                           named ? &image.channel_names : nullptr,
                                           region.x,

@@ -2,8 +2,6 @@
 
 #include <png.h>
 
-#include <algorithm>
-#include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <vector>
@@ -56,18 +54,14 @@ bool write_rows(std::FILE* out, int width, int height, int color_type, png_bytep
 
 }  // namespace
 
-std::string write_png(const std::filesystem::path& file, int width, int height, int channels, const float* values) {
+std::string write_png(const std::filesystem::path& file, int width, int height, int channels, const uint8_t* values) {
     const int color_type = channels == 1   ? PNG_COLOR_TYPE_GRAY
                            : channels == 2 ? PNG_COLOR_TYPE_GRAY_ALPHA
                                            : PNG_COLOR_TYPE_RGB;
-    // Rounded to the nearest of 256 levels, as OpenImageIO converts; NaN as 0.
-    std::vector<png_byte> bytes(std::size_t(width) * std::size_t(height) * std::size_t(channels));
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-        const float v = values[i];
-        bytes[i] = png_byte(v > 0.0f ? std::lround(std::min(v, 1.0f) * 255.0f) : 0);
-    }
+    // libpng reads the rows and never writes them.
+    auto* const bytes = const_cast<png_bytep>(values);
     std::vector<png_bytep> rows(static_cast<std::size_t>(height));
-    for (int y = 0; y < height; ++y) rows[std::size_t(y)] = &bytes[std::size_t(y) * std::size_t(width) * channels];
+    for (int y = 0; y < height; ++y) rows[std::size_t(y)] = bytes + std::size_t(y) * std::size_t(width) * channels;
     std::FILE* out = std::fopen(file.c_str(), "wb");
     if (!out) return "cannot write image: cannot open " + file.string();
     std::string error;

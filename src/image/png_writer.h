@@ -6,15 +6,16 @@
 /// 200 ms (image_codec.h), so a small render to PNG finishes in milliseconds. Every other
 /// format, and every read, goes through OpenImageIO.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
 namespace glint {
 
-/// Write `channels` (1 grey, 2 grey + alpha, 3 RGB) display values in [0, 1] per pixel, row
-/// by row from the top, as an 8-bit PNG tagged sRGB, to `file`. Returns "" or what failed
-/// ("cannot write image: ...").
+/// Write `channels` (1 grey, 2 grey + alpha, 3 RGB) 8-bit display values per pixel, row by
+/// row from the top, as a PNG tagged sRGB, to `file`. Returns "" or what failed ("cannot
+/// write image: ...").
 [[nodiscard]] std::string write_png(const std::filesystem::path& file, int width, int height, int channels,
-                                    const float* values);
+                                    const uint8_t* values);
 
 }  // namespace glint

@@ -5,10 +5,10 @@
 /// level collapse the binary tree into 8-wide nodes (`WideBvh`).
 
 #include "glint/math/bounds3.h"
+#include "glint/util/large_array.h"
 
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace glint {
 
@@ -37,8 +37,8 @@ static_assert(sizeof(BvhNode) == 32);
 /// A binary BVH: node 0 is the root (no nodes when there is nothing to hit), leaves index
 /// `order`, which maps leaf entries to the caller's primitive indices.
 struct BinaryBvh {
-    std::vector<BvhNode> nodes;
-    std::vector<uint32_t> order;
+    LargeArray<BvhNode> nodes;
+    LargeArray<uint32_t> order;
 };
 
 /// Above this depth the SAH decides splits; from it on (only for pathological inputs) the

@@ -15,6 +15,7 @@
 #include "glint/accel/traversal_count.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
+#include "glint/util/large_array.h"
 
 #include <bit>
 #include <cmath>
@@ -117,9 +118,12 @@ private:
     [[nodiscard]] static uint32_t intersect_node_far_to_near(const WideNode& node, const WideRay& r, float tmin,
                                                              float tmax, uint32_t* child, float* t_enter);
 
+    // The nodes stay in ordinary memory, as do TriangleBvh's blocks: from LargeArray, camera
+    // rays on the bunny ran 6-9 % slower (docs/performance.md, "Page faults"); the build's
+    // temporaries, which are written once, gain the most from it.
     std::vector<WideNode> nodes_;
-    std::vector<WideLeaf> leaves_;
-    std::vector<uint32_t> order_;
+    LargeArray<WideLeaf> leaves_;
+    LargeArray<uint32_t> order_;
     Bounds3 bounds_;
 };
 
