@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
         if (*info_cmd) status = glint::app::run_info(info_path, info_options);
         if (*assemble_cmd) status = glint::app::run_assemble(assemble);
         if (*explain_cmd) status = glint::app::run_explain(explain);
-        if (*view_cmd) status = glint::app::run_view(view);
+        if (*view_cmd) status = glint::app::run_view(view, argc, argv);
     } catch (const std::exception& e) {
         if (mpi.distributed()) mpi.abort(e.what());
         fmt::print(stderr, "glint: error: {}\n", e.what());

@@ -12,11 +12,16 @@
 #endif
 
 #include <fmt/core.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
 
 namespace glint::app {
 
@@ -33,21 +38,40 @@ void add_view_options(CLI::App* cmd, ViewOptions& opt) {
     add_scene_options(cmd, opt.scene);
 }
 
-bool viewer_available() {
-#ifdef GLINT_HAVE_VIEWER
-    return true;
-#else
-    return false;
-#endif
+#if !defined(GLINT_HAVE_VIEWER) && defined(GLINT_VIEWER_PROGRAM)
+namespace {
+
+/// The viewer's program: beside this one, in the build tree as after `cmake --install`.
+std::filesystem::path viewer_program() {
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return (ec ? std::filesystem::path(".") : self.parent_path()) / GLINT_VIEWER_PROGRAM;
 }
 
-int run_view(const ViewOptions& opt) {
-#ifndef GLINT_HAVE_VIEWER
+}  // namespace
+#endif
+
+int run_view(const ViewOptions& opt, int argc, char** argv) {
+#if !defined(GLINT_HAVE_VIEWER) && defined(GLINT_VIEWER_PROGRAM)
+    // The viewer's program takes over this process with the same arguments, so that only
+    // `glint view` loads the viewer's libraries.
     (void)opt;
+    const std::string program = viewer_program().string();
+    std::vector<char*> args(argv, argv + argc);
+    args.push_back(nullptr);
+    ::execv(program.c_str(), args.data());
+    throw std::runtime_error(fmt::format("cannot start the viewer {}: {} (build it again: it is built with glint)",
+                                         program, std::error_code(errno, std::generic_category()).message()));
+#elif !defined(GLINT_HAVE_VIEWER)
+    (void)opt;
+    (void)argc;
+    (void)argv;
     throw std::runtime_error(
         "this glint was built without the viewer (SDL2 or Dear ImGui was missing, or GLINT_VIEWER=OFF): install "
         "libsdl2-dev and libimgui-dev (scripts/setup.sh does) and build again");
 #else
+    (void)argc;
+    (void)argv;
     RenderSettings checked;
     apply_overrides(opt.overrides, checked);
     std::string output = opt.output;

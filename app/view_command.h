@@ -1,7 +1,7 @@
 #pragma once
 // `glint view`: a window that renders the scene progressively, with an orbit camera, and
 // explains the pixel clicked. Built when SDL2 and Dear ImGui are installed (libsdl2-dev,
-// libimgui-dev); otherwise the command says so.
+// libimgui-dev), as the program glint-view; otherwise the command says so.
 
 #include "render_overrides.h"
 #include "scene_source.h"
@@ -30,10 +30,9 @@ struct ViewOptions {
 
 void add_view_options(CLI::App* command, ViewOptions& options);
 
-/// Whether this build has the viewer.
-[[nodiscard]] bool viewer_available();
-
-/// Run `glint view`; returns the exit status. Throws on every error, with a message.
-int run_view(const ViewOptions& options);
+/// Run `glint view`; returns the exit status. Throws on every error, with a message. `glint`
+/// itself replaces its process by `glint-view` with the same arguments (`argc`, `argv`);
+/// `glint-view` opens the window.
+int run_view(const ViewOptions& options, int argc, char** argv);
 
 }  // namespace glint::app
