@@ -1,6 +1,8 @@
-// MpiSession with Open MPI: the work queue of tiles (mpi_session.h says why).
+// MpiSession with Open MPI, in `glint-mpi`: the work queue of tiles (mpi_session.h says why).
 
 #include "mpi_session.h"
+
+#include "mpi_launcher.h"
 
 #include "glint/integrators/tile_pixels.h"
 #include "glint/util/byte_stream.h"
@@ -28,14 +30,6 @@ constexpr int kWork = 2;
 constexpr int kResult = 3;
 // A batch is at most this many tiles: enough to keep a rank's threads busy.
 constexpr std::size_t kMaxBatch = 32;
-
-/// True when an MPI launcher started this process: Open MPI's mpirun, or a PMI/PMIx
-/// launcher (Slurm's srun, MPICH's Hydra).
-bool launched_by_mpi() {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-        if (std::getenv(name) != nullptr) return true;
-    return false;
-}
 
 /// The tiles to render, handed out from the front in batches of a share of what is left
 /// (guided self-scheduling, Polychronopoulos & Kuck 1987): large batches early cost few

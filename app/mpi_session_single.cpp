@@ -1,6 +1,11 @@
-// MpiSession without MPI (Glint built without Open MPI): every run is one process.
+// MpiSession of `glint`, which never loads Open MPI: every run is one process. Started by an
+// MPI launcher, it hands the process to `glint-mpi` (when Glint was built with Open MPI), the
+// same command line with mpi_session.cpp.
 
 #include "mpi_session.h"
+
+#include "mpi_launcher.h"
+#include "program_beside.h"
 
 #include <fmt/core.h>
 
@@ -8,7 +13,14 @@
 
 namespace glint::app {
 
-MpiSession::MpiSession(int& /*argc*/, char**& /*argv*/) {}
+MpiSession::MpiSession(int& argc, char**& argv) {
+#ifdef GLINT_MPI_PROGRAM
+    if (launched_by_mpi()) abort(run_program_beside(GLINT_MPI_PROGRAM, argc, argv) + " (it is built with glint)");
+#else
+    (void)argc;
+    (void)argv;
+#endif
+}
 
 MpiSession::~MpiSession() = default;
 

@@ -1,6 +1,7 @@
 #include "view_command.h"
 
 #include "display_options.h"
+#include "program_beside.h"
 
 #include "glint/image/image_io.h"
 #include "glint/integrators/integrator_registry.h"
@@ -12,15 +13,12 @@
 #endif
 
 #include <fmt/core.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace glint::app {
@@ -38,30 +36,13 @@ void add_view_options(CLI::App* cmd, ViewOptions& opt) {
     add_scene_options(cmd, opt.scene);
 }
 
-#if !defined(GLINT_HAVE_VIEWER) && defined(GLINT_VIEWER_PROGRAM)
-namespace {
-
-/// The viewer's program: beside this one, in the build tree as after `cmake --install`.
-std::filesystem::path viewer_program() {
-    std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    return (ec ? std::filesystem::path(".") : self.parent_path()) / GLINT_VIEWER_PROGRAM;
-}
-
-}  // namespace
-#endif
-
 int run_view(const ViewOptions& opt, int argc, char** argv) {
 #if !defined(GLINT_HAVE_VIEWER) && defined(GLINT_VIEWER_PROGRAM)
     // The viewer's program takes over this process with the same arguments, so that only
     // `glint view` loads the viewer's libraries.
     (void)opt;
-    const std::string program = viewer_program().string();
-    std::vector<char*> args(argv, argv + argc);
-    args.push_back(nullptr);
-    ::execv(program.c_str(), args.data());
-    throw std::runtime_error(fmt::format("cannot start the viewer {}: {} (build it again: it is built with glint)",
-                                         program, std::error_code(errno, std::generic_category()).message()));
+    throw std::runtime_error(run_program_beside(GLINT_VIEWER_PROGRAM, argc, argv) +
+                             " (the viewer: build it again, it is built with glint)");
 #elif !defined(GLINT_HAVE_VIEWER)
     (void)opt;
     (void)argc;

@@ -6,6 +6,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+
+#include <tbb/task_arena.h>
 
 using namespace glint;
 namespace fs = std::filesystem;
@@ -118,6 +122,34 @@ TEST_F(ImageIoTest, ReadErrorsNameTheFile) {
     const fs::path garbage = dir_ / "garbage.png";
     std::ofstream(garbage) << "this is not a png";
     EXPECT_THROW((void)read_image(garbage), ImageError);
+}
+
+TEST_F(ImageIoTest, AnExrIsTheSameBytesWhateverTheThreadsAndTheTime) {
+    // Rows enough for several of ZIP's 16-row chunks, compressed on however many threads.
+    Image img(64, 100, 3);
+    for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = float(i % 977) / 97.0f;
+    img.attributes = {{"scene", "a.toml"}};
+    const auto bytes_written_on = [&](int threads, const char* name) {
+        tbb::task_arena arena(threads);
+        arena.execute([&] { write_image(dir_ / name, img); });
+        std::ifstream in(dir_ / name, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    const std::string one = bytes_written_on(1, "one.exr"), two = bytes_written_on(2, "two.exr");
+    EXPECT_EQ(one, bytes_written_on(1, "again.exr")) << "two writes of one image differ (a time stamp?)";
+    EXPECT_EQ(one, two) << "one and two threads write different files";
+    const Image back = read_image(dir_ / "two.exr");
+    EXPECT_EQ(back.pixels, img.pixels);
+    EXPECT_EQ(back.attributes, img.attributes);
+}
+
+TEST_F(ImageIoTest, AnExrOfOneChannelKeepsOneChannel) {
+    Image img(4, 2, 1);
+    for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = 0.5f * float(i);
+    write_image(dir_ / "grey.exr", img);
+    const Image back = read_image(dir_ / "grey.exr");
+    ASSERT_EQ(back.channels, 1);
+    EXPECT_EQ(back.pixels, img.pixels);
 }
 
 TEST(Film, ToImageKeepsLinearValuesRowMajorFromTheTop) {

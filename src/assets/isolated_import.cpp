@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string_view>
+#include <utility>
 
 // Present only in sanitizer builds (weak, so null otherwise).
 extern "C" void __sanitizer_set_death_callback(void (*callback)()) __attribute__((weak));
@@ -66,35 +67,45 @@ bool write_all(int fd, std::string_view bytes) {
     // Nor may a crash go through a sanitizer's death callbacks: libFuzzer's would record the
     // input as a crash of its own when assimp corrupts memory here, which is contained.
     if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
+    // The tag and the bytes are written apart: joined, a large mesh would be copied once more.
+    char tag = 'K';
     std::string result;
     try {
-        result = 'K' + work();
+        result = work();
     } catch (const SceneError& e) {
-        result = std::string("E") + e.what();
+        tag = 'E';
+        result = e.what();
     } catch (const std::exception& e) {
-        result = "E" + context + ": " + e.what();
+        tag = 'E';
+        result = context + ": " + e.what();
     }
-    if (!write_all(result_fd, result)) {
+    if (!write_all(result_fd, std::string_view(&tag, 1)) || !write_all(result_fd, result)) {
         std::fprintf(stderr, "cannot hand the meshes back: %s\n", std::strerror(errno));
         ::_exit(2);
     }
     ::_exit(0);  // no exit handlers, no flushing of the parent's buffered output
 }
 
-/// The whole of what the child wrote to `fd`, a memory file.
-std::string read_result(int fd, const std::string& context) {
+/// What the child wrote to `fd`, a memory file: its tag (the first byte, 0 for none) and the
+/// bytes after it, read straight into place (no copy that drops the tag afterwards).
+std::pair<char, std::string> read_result(int fd, const std::string& context) {
     struct stat info {};
     if (::fstat(fd, &info) != 0)
         throw SceneError(context + ": lost what the importer process read: " + std::strerror(errno));
-    std::string bytes(std::size_t(info.st_size), '\0');
-    std::size_t at = 0;
-    while (at < bytes.size()) {
-        const ssize_t n = ::pread(fd, bytes.data() + at, bytes.size() - at, off_t(at));
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) throw SceneError(context + ": lost what the importer process read: " + std::strerror(errno));
-        at += std::size_t(n);
-    }
-    return bytes;
+    if (info.st_size == 0) return {'\0', ""};
+    auto read_at = [&](char* out, std::size_t size, std::size_t offset) {
+        for (std::size_t at = 0; at < size;) {
+            const ssize_t n = ::pread(fd, out + at, size - at, off_t(offset + at));
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) throw SceneError(context + ": lost what the importer process read: " + std::strerror(errno));
+            at += std::size_t(n);
+        }
+    };
+    char tag = '\0';
+    read_at(&tag, 1, 0);
+    std::string bytes(std::size_t(info.st_size) - 1, '\0');
+    read_at(bytes.data(), bytes.size(), 1);
+    return {tag, std::move(bytes)};
 }
 
 /// Everything written to `fd` until its end, at most kMaxChildMessage bytes kept.
@@ -148,12 +159,10 @@ std::string run_isolated(const std::function<std::string()>& work, const std::st
                          (printed.empty() ? std::string() : ": " + printed) +
                          "; the file is malformed or uses something assimp cannot read");
     }
-    std::string bytes = read_result(result.get(), context);
-    if (!bytes.empty() && bytes[0] == 'E') throw SceneError(bytes.substr(1));
-    if (bytes.empty() || bytes[0] != 'K')
-        throw SceneError(context + ": the importer process handed back nothing readable");
-    bytes.erase(0, 1);
-    return bytes;
+    auto [tag, bytes] = read_result(result.get(), context);
+    if (tag == 'E') throw SceneError(bytes);
+    if (tag != 'K') throw SceneError(context + ": the importer process handed back nothing readable");
+    return std::move(bytes);
 }
 
 }  // namespace glint

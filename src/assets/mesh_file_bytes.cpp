@@ -108,6 +108,22 @@ std::vector<std::shared_ptr<const Image>> read_images(ByteReader& r) {
 
 std::string to_bytes(const MeshFile& file) {
     ByteWriter w;
+    // Room for the meshes' arrays and the images' pixels, which are nearly all of it, plus
+    // the rest: the dragon's 4.8 MB grew by doubling, copied 17 MB and faulted 4,000 pages.
+    std::size_t size = std::size_t(1) << 16;
+    for (const std::shared_ptr<TriangleMesh>& mesh : file.meshes)
+        if (mesh) {
+            const MeshData& data = mesh->data();
+            size += 256 + mesh->name().size() + data.positions.size() * sizeof(Vec3) +
+                    data.indices.size() * sizeof(uint32_t) + data.normals.size() * sizeof(Vec3) +
+                    data.uvs.size() * sizeof(Vec2) + data.colors.size() * sizeof(Color) +
+                    data.vertex_materials.size() * sizeof(data.vertex_materials[0]) +
+                    data.tangents.size() * sizeof(Tangent);
+        }
+    for (const auto* images : {&file.material_images, &file.material_normal_images})
+        for (const std::shared_ptr<const Image>& image : *images)
+            if (image) size += 64 + image->pixels.size() * sizeof(float);
+    w.reserve(size);
     w.value(uint64_t(file.meshes.size()));
     for (const std::shared_ptr<TriangleMesh>& mesh : file.meshes) {
         w.value(uint8_t(mesh != nullptr));

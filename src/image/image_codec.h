@@ -1,14 +1,18 @@
 #pragma once
-/// \file The boundary between libglint and OpenImageIO. Internal to src/image.
+/// \file The boundary between libglint and its image libraries. Internal to src/image.
 ///
 /// Debian's OpenImageIO brings 255 shared libraries (OpenCV with GStreamer and FFmpeg,
 /// OpenVDB, DCMTK...), all bound at load time: linked into a program, they cost it 200 ms and
 /// 130 MB before main() (docs/performance.md, "Start-up"). So OpenImageIO lives in a module of
 /// its own, `libglint_oiio.so` (oiio_codec.cpp), which image_io.cpp loads the first time an
 /// image is read or written: `glint --help`, `glint info`, a scene file's error and every
-/// test that touches no image never pay for it.
+/// test that touches no image never pay for it. Even loaded on demand it costs the process
+/// that reads or writes an image 350-400 ms (on a 2-core EPYC), more than a small render: so
+/// EXR, the format renders are written in, is written by OpenEXR alone, in a second module
+/// (`libglint_exr.so`, exr_codec.cpp: four libraries, 3 ms), and PNG by libpng, linked in
+/// (png_writer.h).
 ///
-/// The module hands out plain function pointers (no exceptions and no vtables cross the
+/// The modules hand out plain function pointers (no exceptions and no vtables cross the
 /// boundary); each returns "" on success and otherwise what went wrong, worded to follow
 /// "NAME: ".
 
@@ -54,7 +58,12 @@ struct PixelsToWrite {
     int x = 0, y = 0, frame_width = 0, frame_height = 0;
     /// Text attributes to store as "glint:NAME" (EXR); may be null.
     const std::vector<std::pair<std::string, std::string>>* attributes = nullptr;
+    /// Threads the writer may compress with (EXR).
+    int threads = 1;
 };
+
+/// Glint's own header attributes: "glint:scene", "glint:spp", ...
+inline const std::string kAttributePrefix = "glint:";
 
 struct Functions {
     /// Read the file at `path` (straight, unassociated alpha).
@@ -66,12 +75,19 @@ struct Functions {
     std::string (*write_file)(const std::string& format_name, const std::string& file, const PixelsToWrite& pixels);
 };
 
-/// The module's entry point, looked up by this name.
-inline constexpr const char* kEntryPoint = "glint_oiio_codec";
-using EntryPoint = const Functions* (*)();
+/// The EXR module's one function.
+struct ExrFunctions {
+    /// Write `pixels` (floats) to `file` as OpenEXR.
+    std::string (*write_file)(const std::string& file, const PixelsToWrite& pixels);
+};
 
-/// The module's functions, loaded on the first call. Throws ImageError when the module
+/// The modules' entry points, looked up by these names.
+inline constexpr const char* kOiioEntryPoint = "glint_oiio_codec";
+inline constexpr const char* kExrEntryPoint = "glint_exr_codec";
+
+/// Each module's functions, loaded on the first call. Throw ImageError when the module
 /// cannot be loaded.
 [[nodiscard]] const Functions& oiio();
+[[nodiscard]] const ExrFunctions& exr();
 
 }  // namespace glint::codec

@@ -22,6 +22,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <unistd.h>
 
 namespace glint {
@@ -205,7 +206,7 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
         for (std::size_t p = 0; p < pixel_count; ++p)
             for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = data[p * channels + std::min(c, channels - 1)];
         if (!write_pfm(tmp, image, rgb)) error = "cannot write image: write failed";
-    } else if (ext == ".png") {
+    } else if (png) {
         error = write_png(tmp, image.width, image.height, channels, bytes.get());
     } else {
         // Only EXR keeps where the pixels lie in a frame, and text beside them.
@@ -221,8 +222,10 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
                                           region.y,
                                           region.frame_width,
                                           region.frame_height,
-                                          exr ? &image.attributes : nullptr};
-        error = codec::oiio().write_file(path.string(), tmp.string(), pixels);
+                                          exr ? &image.attributes : nullptr,
+                                          tbb::this_task_arena::max_concurrency()};
+        error = exr ? codec::exr().write_file(tmp.string(), pixels)
+                    : codec::oiio().write_file(path.string(), tmp.string(), pixels);
     }
     if (!error.empty()) {
         std::error_code ec;

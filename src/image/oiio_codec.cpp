@@ -14,11 +14,9 @@
 namespace {
 
 using glint::codec::DecodedImage;
+using glint::codec::kAttributePrefix;
 using glint::codec::PixelsToWrite;
 using glint::codec::SizeCheck;
-
-/// Glint's own header attributes: "glint:scene", "glint:spp", ...
-const std::string kAttributePrefix = "glint:";
 
 /// Pixels of an opened image as floats, with what the header says about them.
 std::string read_pixels(OIIO::ImageInput& input, const SizeCheck& check, DecodedImage& out) {

@@ -16,12 +16,17 @@ std::size_t huge_page_bytes(std::size_t bytes) {
     return (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
 }
 
+/// Where an array of `bytes` starts: large ones on a huge page, small ones as their type asks.
+std::align_val_t array_alignment(std::size_t bytes, std::size_t alignment) {
+    return std::align_val_t(bytes < kHugePageBytes ? alignment : std::max(alignment, kHugePageBytes));
+}
+
 }  // namespace
 
 void* allocate_large_array(std::size_t bytes, std::size_t alignment) {
-    if (bytes < kHugePageBytes) return ::operator new(bytes, std::align_val_t(alignment));
+    if (bytes < kHugePageBytes) return ::operator new(bytes, array_alignment(bytes, alignment));
     const std::size_t rounded = huge_page_bytes(bytes);
-    void* p = ::operator new(rounded, std::align_val_t(std::max(alignment, kHugePageBytes)));
+    void* p = ::operator new(rounded, array_alignment(bytes, alignment));
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     // Advice only: where transparent huge pages are off, the kernel refuses it and the
     // array keeps small pages.
@@ -31,11 +36,7 @@ void* allocate_large_array(std::size_t bytes, std::size_t alignment) {
 }
 
 void free_large_array(void* p, std::size_t bytes, std::size_t alignment) noexcept {
-    if (bytes < kHugePageBytes) {
-        ::operator delete(p, std::align_val_t(alignment));
-        return;
-    }
-    ::operator delete(p, std::align_val_t(std::max(alignment, kHugePageBytes)));
+    ::operator delete(p, array_alignment(bytes, alignment));
 }
 
 }  // namespace glint::detail

@@ -45,6 +45,8 @@ public:
         const auto* p = static_cast<const char*>(data);
         bytes_.append(p, size);
     }
+    /// Room for `size` bytes in all, so that a large record is not copied as it grows.
+    void reserve(std::size_t size) { bytes_.reserve(size); }
     [[nodiscard]] const std::string& bytes() const { return bytes_; }
     [[nodiscard]] std::string take() { return std::move(bytes_); }
 
