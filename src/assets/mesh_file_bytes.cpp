@@ -94,7 +94,7 @@ std::vector<std::shared_ptr<const Image>> read_images(ByteReader& r) {
         image->width = r.value<int>();
         image->height = r.value<int>();
         image->channels = r.value<int>();
-        image->pixels = r.array<float>();
+        image->pixels = r.array<float, LargeArrayAllocator<float>>();
         if (image->width <= 0 || image->height <= 0 || image->channels <= 0 ||
             image->pixels.size() !=
                 std::size_t(image->width) * std::size_t(image->height) * std::size_t(image->channels))

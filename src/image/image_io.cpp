@@ -4,6 +4,7 @@
 #include "png_chunks.h"
 #include "png_writer.h"
 
+#include "glint/image/srgb_byte.h"
 #include "glint/math/color.h"
 #include "glint/util/file_extension.h"
 #include "glint/util/move_into_place.h"
@@ -30,9 +31,6 @@ namespace glint {
 namespace {
 
 bool is_float_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
-
-/// A display value in [0, 1] as the nearest of 256 levels, as OpenImageIO quantises; NaN as 0.
-uint8_t display_byte(float v) { return uint8_t(v > 0.0f ? std::lround(std::min(v, 1.0f) * 255.0f) : 0); }
 
 /// Portable float map (PFM): "PF" header, width height, -1.0 (little-endian), then RGB float
 /// rows from the bottom up. OpenImageIO 2.4 (Debian 12) reads PFM but has no writer for it.
@@ -69,7 +67,7 @@ Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
     image.width = decoded.width;
     image.height = decoded.height;
     image.channels = decoded.channels;
-    image.pixels = std::move(decoded.pixels);
+    image.pixels.assign(decoded.pixels.begin(), decoded.pixels.end());
     image.channel_names = std::move(decoded.channel_names);
     image.region = {decoded.x, decoded.y, decoded.frame_width, decoded.frame_height};
     image.attributes = std::move(decoded.attributes);
@@ -182,19 +180,19 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
                 std::copy(in, in + channels, &data[first]);
                 continue;
             }
-            float display[3];
+            float toned[3];
             if (channels == 3) {
-                const Color toned = apply_tone_curve(options.tone_curve, Color(in[0], in[1], in[2]) * gain);
-                for (int c = 0; c < 3; ++c) display[c] = linear_to_srgb(toned[c]);
+                const Color c = apply_tone_curve(options.tone_curve, Color(in[0], in[1], in[2]) * gain);
+                toned[0] = c.r, toned[1] = c.g, toned[2] = c.b;
             } else {
                 for (int c = 0; c < channels; ++c)
-                    display[c] = linear_to_srgb(apply_tone_curve(options.tone_curve, Color(in[c] * gain)).r);
+                    toned[c] = apply_tone_curve(options.tone_curve, Color(in[c] * gain)).r;
             }
             for (int c = 0; c < channels; ++c) {
                 if (png)
-                    bytes[first + c] = display_byte(display[c]);
+                    bytes[first + c] = srgb_byte(toned[c]);
                 else
-                    data[first + c] = display[c];
+                    data[first + c] = linear_to_srgb(toned[c]);
             }
         }
     });

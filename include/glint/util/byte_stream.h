@@ -35,8 +35,8 @@ public:
         raw(s.data(), s.size());
     }
     /// A 64-bit count, then the elements' bytes.
-    template <class T>
-    void array(const std::vector<T>& items) {
+    template <class T, class Allocator>
+    void array(const std::vector<T, Allocator>& items) {
         static_assert(std::is_trivially_copyable_v<T>);
         value(uint64_t(items.size()));
         raw(items.data(), items.size() * sizeof(T));
@@ -72,10 +72,10 @@ public:
         at_ += n;
         return s;
     }
-    template <class T>
-    [[nodiscard]] std::vector<T> array() {
+    template <class T, class Allocator = std::allocator<T>>
+    [[nodiscard]] std::vector<T, Allocator> array() {
         static_assert(std::is_trivially_copyable_v<T>);
-        std::vector<T> items(count<uint64_t>(sizeof(T)));
+        std::vector<T, Allocator> items(count<uint64_t>(sizeof(T)));
         raw(items.data(), items.size() * sizeof(T));
         return items;
     }
