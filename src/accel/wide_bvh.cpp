@@ -74,9 +74,12 @@ public:
             float best[WideNode::kWidth];
             uint8_t split[WideNode::kWidth];
             for (uint32_t j = 1; j <= WideNode::kWidth; ++j) {
-                best[j - 1] = std::numeric_limits<float>::infinity();
-                split[j - 1] = 0;
-                for (uint32_t left = 1; left < j; ++left) {
+                // From two slots on, the first subtree in one slot is where the search starts,
+                // so that a split is chosen even when no cost compares (NaN bounds of a
+                // hostile mesh: the split stayed 0 and distribute() indexed split[-1]).
+                best[j - 1] = j >= 2 ? a.cost[0] + b.cost[j - 2] : std::numeric_limits<float>::infinity();
+                split[j - 1] = j >= 2 ? 1 : 0;
+                for (uint32_t left = 2; left < j; ++left) {
                     const float c = a.cost[left - 1] + b.cost[j - left - 1];
                     if (c < best[j - 1]) {
                         best[j - 1] = c;
