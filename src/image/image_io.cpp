@@ -183,7 +183,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
             float toned[3];
             if (channels == 3) {
                 const Color c = apply_tone_curve(options.tone_curve, Color(in[0], in[1], in[2]) * gain);
-                toned[0] = c.r, toned[1] = c.g, toned[2] = c.b;
+                toned[0] = c.r;
+                toned[1] = c.g;
+                toned[2] = c.b;
             } else {
                 for (int c = 0; c < channels; ++c)
                     toned[c] = apply_tone_curve(options.tone_curve, Color(in[c] * gain)).r;
