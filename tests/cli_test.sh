@@ -296,7 +296,7 @@ if "$glint" render "${res[@]}" -o none.pfm --resume 2>err.txt; then fail "--resu
 grep -q "no checkpoint to resume" err.txt || fail "missing checkpoint message: $(cat err.txt)"
 
 # Start-up: OpenImageIO (255 shared libraries, 350 ms; src/image/image_codec.h) is loaded only
-# by a run that reads or writes an image it needs for; PNG output goes through libpng, EXR
+# by a run that reads or writes an image it needs for; PNG output is written over zlib, EXR
 # output through OpenEXR's own module.
 loads() { local library=$1; shift; LD_DEBUG=libs "$glint" "$@" 2>&1 >/dev/null | grep -q "$library"; }
 loads libOpenImageIO.so --help && fail "glint --help loaded OpenImageIO"

@@ -11,9 +11,29 @@ namespace glint {
 
 namespace {
 
-/// thresholds[b - 1]: the least linear value whose level is b or more (b = 1..255).
-std::array<float, 255> srgb_thresholds() {
+/// Floats in [0, 1) by their top 16 bits (sign, exponent, 7 bits of mantissa): 16,256
+/// buckets, each narrower than any step between two levels (the narrowest step, near 1, is
+/// 0.0089 wide; the buckets there 0.0039), so at most one threshold falls inside a bucket.
+constexpr int kBucketShift = 16;
+constexpr std::size_t kBuckets = std::bit_cast<uint32_t>(1.0f) >> kBucketShift;
+
+struct SrgbLevels {
+    /// thresholds[b - 1]: the least linear value whose level is b or more (b = 1..255).
     std::array<float, 255> thresholds{};
+    /// The level of the least float of each bucket.
+    std::array<uint8_t, kBuckets> bucket_levels{};
+
+    /// The number of thresholds `linear` has reached, by halving (at most 8 comparisons).
+    uint8_t count_reached(float linear) const {
+        std::size_t level = 0;
+        for (std::size_t step = 128; step > 0; step /= 2)
+            if (thresholds[level + step - 1] <= linear) level += step;
+        return uint8_t(level);
+    }
+};
+
+SrgbLevels find_levels() {
+    SrgbLevels levels;
     for (int level = 1; level <= 255; ++level) {
         // The level of a positive float rises with its bit pattern: bisect the patterns in
         // (0, 1] for the first one at `level` or above.
@@ -25,9 +45,11 @@ std::array<float, 255> srgb_thresholds() {
             else
                 below = middle;
         }
-        thresholds[std::size_t(level - 1)] = std::bit_cast<float>(at_or_above);
+        levels.thresholds[std::size_t(level - 1)] = std::bit_cast<float>(at_or_above);
     }
-    return thresholds;
+    for (std::size_t bucket = 0; bucket < kBuckets; ++bucket)
+        levels.bucket_levels[bucket] = levels.count_reached(std::bit_cast<float>(uint32_t(bucket << kBucketShift)));
+    return levels;
 }
 
 }  // namespace
@@ -37,12 +59,12 @@ uint8_t display_byte(float display) {
 }
 
 uint8_t srgb_byte(float linear) {
-    static const std::array<float, 255> thresholds = srgb_thresholds();
-    // The levels `linear` reaches (NaN reaches none), by steps of 128, 64, ..., 1: at most 255.
-    std::size_t level = 0;
-    for (std::size_t step = 128; step > 0; step /= 2)
-        if (thresholds[level + step - 1] <= linear) level += step;
-    return uint8_t(level);
+    static const SrgbLevels levels = find_levels();
+    if (!(linear > 0.0f)) return 0;  // NaN too
+    if (linear >= 1.0f) return 255;
+    // The bucket's first level, and the one step up that may lie inside the bucket.
+    const uint8_t level = levels.bucket_levels[std::bit_cast<uint32_t>(linear) >> kBucketShift];
+    return uint8_t(level + (level < 255 && levels.thresholds[level] <= linear));
 }
 
 }  // namespace glint

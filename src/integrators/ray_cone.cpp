@@ -1,6 +1,6 @@
 #include "glint/integrators/ray_cone.h"
 
-#include "glint/math/constants.h"
+#include <algorithm>
 #include "glint/scene/camera.h"
 
 namespace glint {
@@ -9,7 +9,7 @@ RayCone camera_ray_cone(const Camera& camera, uint32_t height, uint32_t samples_
     const float share = 1.0f / float(std::clamp(samples_per_axis, 1u, 8u));
     const float pixels = float(std::max(height, 1u));
     if (camera.projection() == Projection::Orthographic) return {camera.view_height() / pixels * share, 0.0f};
-    return {0.0f, 2.0f * std::tan(radians(camera.vertical_fov()) * 0.5f) / pixels * share};
+    return {0.0f, 2.0f * camera.tan_half_fov() / pixels * share};
 }
 
 }  // namespace glint

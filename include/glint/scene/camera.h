@@ -79,6 +79,8 @@ public:
     [[nodiscard]] const Vec3& up() const { return up_; }
     [[nodiscard]] const Vec3& right() const { return right_; }
     [[nodiscard]] float vertical_fov() const { return vertical_fov_; }
+    /// tan(vertical_fov / 2): half the image plane's height at distance 1 (perspective).
+    [[nodiscard]] float tan_half_fov() const { return tan_half_fov_; }
     [[nodiscard]] float view_height() const { return view_height_; }
 
     /// Where the camera looks at time 0 and the up vector it was given.
