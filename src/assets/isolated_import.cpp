@@ -88,11 +88,11 @@ bool write_all(int fd, std::string_view bytes) {
 
 /// What the child wrote to `fd`, a memory file: its tag (the first byte, 0 for none) and the
 /// bytes after it, read straight into place (no copy that drops the tag afterwards).
-std::pair<char, std::string> read_result(int fd, const std::string& context) {
+std::pair<char, LargeArray<char>> read_result(int fd, const std::string& context) {
     struct stat info {};
     if (::fstat(fd, &info) != 0)
         throw SceneError(context + ": lost what the importer process read: " + std::strerror(errno));
-    if (info.st_size == 0) return {'\0', ""};
+    if (info.st_size == 0) return {'\0', {}};
     auto read_at = [&](char* out, std::size_t size, std::size_t offset) {
         for (std::size_t at = 0; at < size;) {
             const ssize_t n = ::pread(fd, out + at, size - at, off_t(offset + at));
@@ -103,7 +103,7 @@ std::pair<char, std::string> read_result(int fd, const std::string& context) {
     };
     char tag = '\0';
     read_at(&tag, 1, 0);
-    std::string bytes(std::size_t(info.st_size) - 1, '\0');
+    LargeArray<char> bytes(std::size_t(info.st_size) - 1);
     read_at(bytes.data(), bytes.size(), 1);
     return {tag, std::move(bytes)};
 }
@@ -129,7 +129,7 @@ std::string first_line(const std::string& text) {
 
 }  // namespace
 
-std::string run_isolated(const std::function<std::string()>& work, const std::string& context) {
+LargeArray<char> run_isolated(const std::function<std::string()>& work, const std::string& context) {
     std::fflush(nullptr);  // or the child would inherit, and print, the parent's pending output
     // The result goes to a memory file, not a pipe: the child can write all of it without
     // waiting for the parent, which reads the child's messages until they end.
@@ -160,7 +160,7 @@ std::string run_isolated(const std::function<std::string()>& work, const std::st
                          "; the file is malformed or uses something assimp cannot read");
     }
     auto [tag, bytes] = read_result(result.get(), context);
-    if (tag == 'E') throw SceneError(bytes);
+    if (tag == 'E') throw SceneError(std::string(bytes.begin(), bytes.end()));
     if (tag != 'K') throw SceneError(context + ": the importer process handed back nothing readable");
     return std::move(bytes);
 }

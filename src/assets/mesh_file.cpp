@@ -77,14 +77,14 @@ MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
     check_ply_header(path);
     const std::string context = path.string() + ": cannot read mesh file";
     const assimp_import::Functions& functions = assimp();
-    const std::string bytes = run_isolated(
+    const LargeArray<char> bytes = run_isolated(
         [&] {
             assimp_import::Outcome outcome;
             functions.read_file(path.string(), mode, context, outcome);
             return bytes_of(std::move(outcome));
         },
         context);
-    MeshFile file = mesh_file_from_bytes(bytes, path.string());
+    MeshFile file = mesh_file_from_bytes(std::string_view(bytes.data(), bytes.size()), path.string());
     if (mode == ReadMode::Lenient && lower_case_extension(path) == ".obj") {
         const std::vector<std::string> missing = missing_material_libraries(path);
         file.warnings.insert(file.warnings.end(), missing.begin(), missing.end());
@@ -97,14 +97,14 @@ MeshFile read_gltf_geometry(const gltf::Document& doc) {
     const std::string glb = gltf::geometry_glb(doc, warnings);
     const std::string context = doc.path.string() + ": cannot read the geometry";
     const assimp_import::Functions& functions = assimp();
-    const std::string bytes = run_isolated(
+    const LargeArray<char> bytes = run_isolated(
         [&] {
             assimp_import::Outcome outcome;
             functions.read_glb(glb, doc.path.string(), context, outcome);
             return bytes_of(std::move(outcome));
         },
         context);
-    MeshFile file = mesh_file_from_bytes(bytes, doc.path.string());
+    MeshFile file = mesh_file_from_bytes(std::string_view(bytes.data(), bytes.size()), doc.path.string());
     file.warnings.insert(file.warnings.begin(), warnings.begin(), warnings.end());
     // assimp numbers meshes primitive by primitive; the materials come from the JSON.
     std::vector<uint32_t> materials = gltf::primitive_materials(doc);
