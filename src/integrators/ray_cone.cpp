@@ -1,7 +1,8 @@
 #include "glint/integrators/ray_cone.h"
 
-#include <algorithm>
 #include "glint/scene/camera.h"
+
+#include <algorithm>
 
 namespace glint {
 
