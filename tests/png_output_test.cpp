@@ -6,6 +6,7 @@
 // single pixel.
 #include "glint/image/image_io.h"
 #include "glint/image/srgb_byte.h"
+#include "test_files.h"
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
@@ -15,8 +16,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,11 +24,6 @@ using namespace glint;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string read_bytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 uint32_t big_endian_at(const std::string& bytes, std::size_t at) {
     uint32_t v = 0;
@@ -123,10 +117,7 @@ Image test_image(int width, int height, int channels) {
 
 class PngOutputTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("glint_png_output_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
+    void SetUp() override { dir_ = glint_test::temp_dir(); }
     void TearDown() override { fs::remove_all(dir_); }
     fs::path dir_;
 };
@@ -143,7 +134,7 @@ TEST_F(PngOutputTest, RowsComeBackAsTheLevelsWritten) {
         const Image image = test_image(s.width, s.height, s.channels);
         const fs::path path = dir_ / "out.png";
         write_image(path, image);
-        const std::vector<uint8_t> samples = decode(read_bytes(path), s.width, s.height, s.channels);
+        const std::vector<uint8_t> samples = decode(glint_test::read_file(path), s.width, s.height, s.channels);
         ASSERT_EQ(samples.size(), image.pixels.size());
         for (std::size_t i = 0; i < samples.size(); ++i)
             ASSERT_EQ(int(samples[i]), int(srgb_byte(image.pixels[i])))
@@ -158,7 +149,7 @@ TEST_F(PngOutputTest, SameBytesOnOneThreadOrSeveral) {
     for (int i = 0; i < 2; ++i) {
         const fs::path path = dir_ / ("threads" + std::to_string(threads[i]) + ".png");
         tbb::task_arena(threads[i]).execute([&] { write_image(path, image); });
-        bytes[i] = read_bytes(path);
+        bytes[i] = glint_test::read_file(path);
     }
     EXPECT_EQ(bytes[0], bytes[1]);
 }

@@ -2,14 +2,12 @@
 #include "glint/diagnostics.h"
 #include "glint/integrators/checkpoint.h"
 #include "glint/scene_format/toml_scene_loader.h"
+#include "test_files.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 namespace glint {
 namespace {
@@ -18,10 +16,7 @@ namespace fs = std::filesystem;
 
 class WholeFile : public testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("glint-whole-file-" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
+    void SetUp() override { dir_ = glint_test::temp_dir(); }
     void TearDown() override { fs::remove_all(dir_); }
     fs::path dir_;
 };
@@ -29,9 +24,9 @@ protected:
 TEST_F(WholeFile, ReadsEveryByteAndNothingOfWhatIsNoFile) {
     const std::string bytes("a\0b\r\n\xff end", 10);
     const fs::path file = dir_ / "bytes.bin";
-    std::ofstream(file, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    glint_test::write_file(file, bytes);
     EXPECT_EQ(read_whole_file(file), bytes);
-    std::ofstream(dir_ / "empty.bin", std::ios::binary).flush();
+    glint_test::write_file(dir_ / "empty.bin", "");
     EXPECT_EQ(read_whole_file(dir_ / "empty.bin"), std::string());
     EXPECT_FALSE(read_whole_file(dir_));
     EXPECT_FALSE(read_whole_file(dir_ / "absent.toml"));
