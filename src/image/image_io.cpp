@@ -3,11 +3,13 @@
 #include "image_codec.h"
 #include "png_chunks.h"
 #include "png_writer.h"
+#include "radiance_picture.h"
 
 #include "glint/image/srgb_byte.h"
 #include "glint/math/color.h"
 #include "glint/util/file_extension.h"
 #include "glint/util/move_into_place.h"
+#include "glint/util/whole_file.h"
 
 #include <algorithm>
 #include <array>
@@ -18,6 +20,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 
@@ -97,6 +100,17 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
         },
         path.string());
     codec::DecodedImage decoded;
+    unsigned char magic[2] = {};
+    file.clear();
+    if (file.seekg(0).read(reinterpret_cast<char*>(magic), 2) && codec::is_radiance_picture(magic, 2)) {
+        const std::optional<std::string> bytes = read_whole_file(path);
+        if (!bytes) throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
+        if (std::optional<std::string> error = codec::read_radiance_picture(
+                reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), check_size, decoded)) {
+            if (!error->empty()) throw ImageError(path.string() + ": " + *error);
+            return linear_image(std::move(decoded), encoding);
+        }
+    }
     if (const std::string error = codec::oiio().read_file(path.string(), check_size, decoded); !error.empty())
         throw ImageError(path.string() + ": " + error);
     return linear_image(std::move(decoded), encoding);
@@ -113,6 +127,12 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
         },
         name);
     codec::DecodedImage decoded;
+    if (codec::is_radiance_picture(bytes.data(), bytes.size()))
+        if (std::optional<std::string> error =
+                codec::read_radiance_picture(bytes.data(), bytes.size(), check_size, decoded)) {
+            if (!error->empty()) throw ImageError(name + ": " + *error);
+            return linear_image(std::move(decoded), encoding);
+        }
     if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
         !error.empty())
         throw ImageError(name + ": " + error);
