@@ -28,20 +28,21 @@ std::string accept_any(int, int, int) { return ""; }
 const unsigned char* data_of(const std::string& bytes) { return reinterpret_cast<const unsigned char*>(bytes.data()); }
 
 /// What Glint reads, or the error text it gives.
-std::string native_error(const std::string& bytes, DecodedImage& out) {
+std::string native_error(const std::string& bytes, Image& out) {
     const std::optional<std::string> error = read_radiance_picture(data_of(bytes), bytes.size(), accept_any, out);
     return error ? *error : "left to OpenImageIO";
 }
 
 void expect_same_as_openimageio(const std::string& bytes, const std::string& name) {
-    DecodedImage ours, theirs;
+    Image ours;
+    DecodedImage theirs;
     ASSERT_EQ(native_error(bytes, ours), "") << name;
     ASSERT_EQ(oiio().read_memory(data_of(bytes), bytes.size(), "picture.hdr", accept_any, theirs), "") << name;
     ASSERT_EQ(ours.width, theirs.width) << name;
     ASSERT_EQ(ours.height, theirs.height) << name;
     ASSERT_EQ(ours.channels, theirs.channels) << name;
     EXPECT_EQ(ours.channel_names, theirs.channel_names) << name;
-    EXPECT_EQ(ours.integer_data, theirs.integer_data) << name;
+    EXPECT_FALSE(theirs.integer_data) << name;
     ASSERT_EQ(ours.pixels.size(), theirs.pixels.size()) << name;
     // Bit for bit: memcmp also tells -0 from 0 and compares NaNs.
     EXPECT_EQ(std::memcmp(ours.pixels.data(), theirs.pixels.data(), ours.pixels.size() * sizeof(float)), 0) << name;
@@ -143,7 +144,8 @@ TEST(RadiancePicture, EveryMantissaAndExponentIsTheByteTimesTwoToTheExponentMinu
     std::string bytes = header(255, 256);
     for (int e = 0; e < 256; ++e)
         for (int m = 1; m < 256; ++m) bytes += {char(m), char(m / 2), char(255 - m), char(e)};
-    DecodedImage ours, theirs;
+    Image ours;
+    DecodedImage theirs;
     ASSERT_EQ(native_error(bytes, ours), "");
     ASSERT_EQ(oiio().read_memory(data_of(bytes), bytes.size(), "picture.hdr", accept_any, theirs), "");
     for (int e = 0; e < 256; ++e)
@@ -217,14 +219,14 @@ TEST(RadiancePicture, BrokenPicturesSayWhatIsWrong) {
         {overlong_run, "scanline 1 has a run of 127 bytes where 64 are left"},
     };
     for (const Case& c : cases) {
-        DecodedImage out;
+        Image out;
         EXPECT_NE(native_error(c.bytes, out).find(c.expected), std::string::npos)
             << "got '" << native_error(c.bytes, out) << "' for a picture that should give '" << c.expected << "'";
     }
 }
 
 TEST(RadiancePicture, SizeIsCheckedBeforePixelsAreAllocated) {
-    DecodedImage out;
+    Image out;
     const std::string bytes = "#?RADIANCE\n\n-Y 100000 +X 100000\n";
     const auto refuse = [](int width, int height, int channels) {
         return std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(channels) + " refused";
@@ -235,7 +237,7 @@ TEST(RadiancePicture, SizeIsCheckedBeforePixelsAreAllocated) {
 
 TEST(RadiancePicture, OtherOrientationsAreLeftToOpenImageIO) {
     const std::string bytes = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n+Y 1 +X 2\n\x80\x80\x80\x81\x40\x40\x40\x81";
-    DecodedImage out;
+    Image out;
     EXPECT_EQ(native_error(bytes, out), "left to OpenImageIO");
     const fs::path file = glint_test::temp_dir() / "upside_down.hdr";
     glint_test::write_file(file, bytes);

@@ -99,18 +99,19 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
             return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
         },
         path.string());
-    codec::DecodedImage decoded;
     unsigned char magic[2] = {};
     file.clear();
     if (file.seekg(0).read(reinterpret_cast<char*>(magic), 2) && codec::is_radiance_picture(magic, 2)) {
         const std::optional<std::string> bytes = read_whole_file(path);
         if (!bytes) throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
+        Image image;  // linear floats, whichever encoding integer files would be read with
         if (std::optional<std::string> error = codec::read_radiance_picture(
-                reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), check_size, decoded)) {
+                reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), check_size, image)) {
             if (!error->empty()) throw ImageError(path.string() + ": " + *error);
-            return linear_image(std::move(decoded), encoding);
+            return image;
         }
     }
+    codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_file(path.string(), check_size, decoded); !error.empty())
         throw ImageError(path.string() + ": " + error);
     return linear_image(std::move(decoded), encoding);
@@ -126,13 +127,15 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
             return true;
         },
         name);
-    codec::DecodedImage decoded;
-    if (codec::is_radiance_picture(bytes.data(), bytes.size()))
+    if (codec::is_radiance_picture(bytes.data(), bytes.size())) {
+        Image image;
         if (std::optional<std::string> error =
-                codec::read_radiance_picture(bytes.data(), bytes.size(), check_size, decoded)) {
+                codec::read_radiance_picture(bytes.data(), bytes.size(), check_size, image)) {
             if (!error->empty()) throw ImageError(name + ": " + *error);
-            return linear_image(std::move(decoded), encoding);
+            return image;
         }
+    }
+    codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
         !error.empty())
         throw ImageError(name + ": " + error);

@@ -1,6 +1,7 @@
 #include "radiance_picture.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -49,13 +50,15 @@ bool take(std::string_view& text, std::string_view prefix) {
 /// Radiance's conversion as rgbe.c does it: the three mantissas share the exponent, biased
 /// by 128, and are read as byte / 256 (not Ward's (byte + 0.5) / 256, so that 1.0 stays 1.0).
 /// Exact in float: eight significant bits, at worst 2^-135, above the smallest subnormal.
+/// The 256 scales are powers of two, so byte × scale is the same exact value as ldexp's.
 void rgbe_to_float(const unsigned char rgbe[4], float* rgb) {
-    if (rgbe[3] == 0) {
-        rgb[0] = rgb[1] = rgb[2] = 0.0f;
-        return;
-    }
-    const int exponent = int(rgbe[3]) - (128 + 8);
-    for (int c = 0; c < 3; ++c) rgb[c] = std::ldexp(float(rgbe[c]), exponent);
+    static const std::array<float, 256> kScale = [] {
+        std::array<float, 256> scale{};
+        for (int e = 1; e < 256; ++e) scale[std::size_t(e)] = std::ldexp(1.0f, e - (128 + 8));
+        return scale;
+    }();
+    const float scale = kScale[rgbe[3]];
+    for (int c = 0; c < 3; ++c) rgb[c] = float(rgbe[c]) * scale;
 }
 
 /// Scanline y stored flat, four bytes a pixel.
@@ -130,7 +133,7 @@ bool is_radiance_picture(const unsigned char* bytes, std::size_t size) {
 }
 
 std::optional<std::string> read_radiance_picture(const unsigned char* bytes, std::size_t size, const SizeCheck& check,
-                                                 DecodedImage& out) {
+                                                 Image& out) {
     ByteReader in{bytes, bytes + size};
     if (!is_radiance_picture(bytes, size) || !next_line(in))
         return "not a Radiance picture (expected a first line starting with #?)";
@@ -164,20 +167,16 @@ std::optional<std::string> read_radiance_picture(const unsigned char* bytes, std
     if (in.left() / per_scanline < std::size_t(*height))
         return "the pixels end early: " + std::to_string(in.left()) + " bytes cannot hold " + std::to_string(*width) +
                "×" + std::to_string(*height) + " pixels";
+    Image image;
     try {
-        out.pixels.assign(std::size_t(*width) * std::size_t(*height) * 3, 0.0f);
+        image = Image(*width, *height, 3);
     } catch (const std::bad_alloc&) {
         return "cannot read image: out of memory for " + std::to_string(*width) + "×" + std::to_string(*height) +
                " pixels";
     }
-    if (std::string error = read_pixels(in, *width, *height, out.pixels.data()); !error.empty()) return error;
-    out.width = *width;
-    out.height = *height;
-    out.channels = 3;
-    out.channel_names = {"R", "G", "B"};
-    out.integer_data = false;
-    out.linear_tagged = true;
-    out.alpha_channel = -1;
+    if (std::string error = read_pixels(in, *width, *height, image.pixels.data()); !error.empty()) return error;
+    image.channel_names = {"R", "G", "B"};
+    out = std::move(image);
     return "";
 }
 

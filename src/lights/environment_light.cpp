@@ -3,10 +3,13 @@
 #include "glint/math/constants.h"
 #include "glint/math/frame.h"
 #include "glint/sampling/warp.h"
+#include "glint/util/large_array.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
+
+#include <tbb/parallel_for.h>
 
 namespace glint {
 
@@ -29,27 +32,35 @@ float pixel_luminance(const Image& image, int x, int y) {
     return l > 0.0f && std::isfinite(l) ? l : 0.0f;
 }
 
-/// The mean of the bilinear lookup over each pixel: the tent filter integrated over a
-/// pixel weighs its own texel 3/4 and each neighbour 1/8 per axis. Where the lookup
-/// wraps (an equirect map's longitude), so does this; elsewhere it clamps.
-std::vector<float> pixel_means(const Image& image, bool wrap_x) {
+/// The sampling weight of each pixel: the mean of the bilinear lookup over the pixel (the
+/// tent filter integrated over a pixel weighs its own texel 3/4 and each neighbour 1/8 per
+/// axis; where the lookup wraps, an equirect map's longitude, so does this, elsewhere it
+/// clamps) times the layout's dω/(du dv) at its centre. Row by row in parallel, on huge
+/// pages: a 1k sky's three passes over 524,288 pixels took 15 ms on one thread, most of it
+/// first touches of fresh pages.
+LargeArray<float> pixel_weights(const Image& image, BackgroundKind kind) {
     const int w = image.width, h = image.height;
+    const bool wrap_x = kind == BackgroundKind::Equirectangular;
     auto column = [&](int x) { return wrap_x ? (x + w) % w : std::clamp(x, 0, w - 1); };
-    std::vector<float> across(std::size_t(w) * std::size_t(h));
-    for (int y = 0; y < h; ++y)
+    const auto at = [w](int x, int y) { return std::size_t(y) * std::size_t(w) + std::size_t(x); };
+    LargeArray<float> luminance(std::size_t(w) * std::size_t(h)), across(luminance.size()), weights(luminance.size());
+    tbb::parallel_for(0, h, [&](int y) {
+        for (int x = 0; x < w; ++x) luminance[at(x, y)] = pixel_luminance(image, x, y);
+    });
+    tbb::parallel_for(0, h, [&](int y) {
         for (int x = 0; x < w; ++x)
-            across[std::size_t(y) * w + x] =
-                0.75f * pixel_luminance(image, x, y) +
-                0.125f * (pixel_luminance(image, column(x - 1), y) + pixel_luminance(image, column(x + 1), y));
-    std::vector<float> mean(across.size());
-    for (int y = 0; y < h; ++y)
+            across[at(x, y)] = 0.75f * luminance[at(x, y)] +
+                               0.125f * (luminance[at(column(x - 1), y)] + luminance[at(column(x + 1), y)]);
+    });
+    tbb::parallel_for(0, h, [&](int y) {
+        const int above = std::max(y - 1, 0), below = std::min(y + 1, h - 1);
         for (int x = 0; x < w; ++x) {
-            const std::size_t above = std::size_t(std::max(y - 1, 0)) * w + x;
-            const std::size_t below = std::size_t(std::min(y + 1, h - 1)) * w + x;
-            mean[std::size_t(y) * w + x] =
-                0.75f * across[std::size_t(y) * w + x] + 0.125f * (across[above] + across[below]);
+            const Vec2 centre((float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h));
+            weights[at(x, y)] = (0.75f * across[at(x, y)] + 0.125f * (across[at(x, above)] + across[at(x, below)])) *
+                                layout_solid_angle_per_uv(kind, centre);
         }
-    return mean;
+    });
+    return weights;
 }
 
 }  // namespace
@@ -61,15 +72,8 @@ std::unique_ptr<EnvironmentLight> EnvironmentLight::of(const Background& backgro
         return std::unique_ptr<EnvironmentLight>(new EnvironmentLight(background, std::nullopt));
     }
     if (!(background.scale() > 0.0f)) return nullptr;
-    std::vector<float> weights = pixel_means(*image, background.kind() == BackgroundKind::Equirectangular);
-    bool any = false;
-    for (int y = 0; y < image->height; ++y)
-        for (int x = 0; x < image->width; ++x) {
-            const Vec2 centre((float(x) + 0.5f) / float(image->width), (float(y) + 0.5f) / float(image->height));
-            float& w = weights[std::size_t(y) * image->width + x];
-            w *= layout_solid_angle_per_uv(background.kind(), centre);
-            any = any || w > 0.0f;
-        }
+    const LargeArray<float> weights = pixel_weights(*image, background.kind());
+    const bool any = std::any_of(weights.begin(), weights.end(), [](float w) { return w > 0.0f; });
     if (!any) return nullptr;
     return std::unique_ptr<EnvironmentLight>(
         new EnvironmentLight(background, PiecewiseConstant2D(weights, image->width, image->height)));

@@ -1,7 +1,10 @@
 #include "glint/sampling/piecewise_constant_2d.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
+
+#include <tbb/parallel_for.h>
 
 namespace glint {
 
@@ -9,15 +12,15 @@ namespace {
 
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
-std::vector<float> row_sums(const std::vector<float>& weights, int width, int height) {
+std::vector<float> row_sums(std::span<const float> weights, int width, int height) {
     if (width <= 0 || height <= 0 || weights.size() != std::size_t(width) * std::size_t(height))
         throw std::invalid_argument("PiecewiseConstant2D: expected width × height weights");
     std::vector<float> sums(std::size_t(height), 0.0f);
-    for (int y = 0; y < height; ++y) {
+    tbb::parallel_for(0, height, [&](int y) {
         double sum = 0.0;
         for (int x = 0; x < width; ++x) sum += double(weights[std::size_t(y) * std::size_t(width) + std::size_t(x)]);
         sums[std::size_t(y)] = float(sum);
-    }
+    });
     return sums;
 }
 
@@ -26,15 +29,19 @@ int cell(float c, int n) { return std::clamp(int(c * float(n)), 0, n - 1); }
 
 }  // namespace
 
-PiecewiseConstant2D::PiecewiseConstant2D(const std::vector<float>& weights, int width, int height)
+PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> weights, int width, int height)
     : width_(width), height_(height), rows_(row_sums(weights, width, height)) {
-    columns_.reserve(std::size_t(height));
-    for (int y = 0; y < height; ++y) {
+    // Each row's distribution is built on whichever thread takes it, then moved into place in
+    // row order; a row's weights refused (negative, NaN) rethrow on this thread.
+    std::vector<std::optional<DiscreteDistribution>> built(static_cast<std::size_t>(height));
+    tbb::parallel_for(0, height, [&](int y) {
         const auto first = weights.begin() + std::ptrdiff_t(y) * width;
         std::vector<float> row(first, first + width);
         if (rows_.pmf(std::size_t(y)) == 0.0f) std::fill(row.begin(), row.end(), 1.0f);
-        columns_.emplace_back(std::move(row));
-    }
+        built[std::size_t(y)].emplace(std::move(row));
+    });
+    columns_.reserve(std::size_t(height));
+    for (std::optional<DiscreteDistribution>& row : built) columns_.push_back(std::move(*row));
 }
 
 Vec2 PiecewiseConstant2D::sample(Vec2 u, float* pdf) const {

@@ -5,6 +5,7 @@
 #include "glint/math/vec2.h"
 #include "glint/sampling/discrete_distribution.h"
 
+#include <span>
 #include <vector>
 
 namespace glint {
@@ -17,7 +18,9 @@ class PiecewiseConstant2D {
 public:
     /// `weights` in row-major order, width × height of them. Throws std::invalid_argument if
     /// the count is wrong or DiscreteDistribution refuses them (negative, NaN, all zero).
-    PiecewiseConstant2D(const std::vector<float>& weights, int width, int height);
+    /// Rows are built in parallel (a 1k sky's 512 rows took 10 ms on one thread); the result
+    /// does not depend on the thread count.
+    PiecewiseConstant2D(std::span<const float> weights, int width, int height);
 
     /// A point in [0, 1)² for u in [0, 1)²; `pdf` receives its density per unit area.
     [[nodiscard]] Vec2 sample(Vec2 u, float* pdf) const;
