@@ -18,8 +18,8 @@ class PiecewiseConstant2D {
 public:
     /// `weights` in row-major order, width × height of them. Throws std::invalid_argument if
     /// the count is wrong or DiscreteDistribution refuses them (negative, NaN, all zero).
-    /// Rows are built in parallel (a 1k sky's 512 rows took 10 ms on one thread); the result
-    /// does not depend on the thread count.
+    /// Rows are built in parallel (a 1k sky's 512 rows, serially, were 7 % of a 1×1 render
+    /// lit by it); the result does not depend on the thread count.
     PiecewiseConstant2D(std::span<const float> weights, int width, int height);
 
     /// A point in [0, 1)² for u in [0, 1)²; `pdf` receives its density per unit area.
