@@ -11,6 +11,7 @@
 #include "glint/scene/render_scene.h"
 #include "glint/scene/scene.h"
 
+#include "source_paths.h"
 #include "test_rays.h"
 
 #include <gtest/gtest.h>
@@ -26,9 +27,6 @@
 
 namespace glint {
 namespace {
-
-const std::filesystem::path kMeshDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
-const std::filesystem::path kTestDataDir = std::filesystem::path(GLINT_SOURCE_DIR) / "tests" / "data";
 
 /// Closest hit by testing every triangle with the same watertight routine.
 bool brute_force_intersect(const TriangleMesh& mesh, Ray& ray, Hit& hit) {
@@ -72,12 +70,12 @@ TEST_P(MeshFile, BvhAgreesWithBruteForce) {
 }
 
 // In every clone: a 320-triangle icosphere, so the test never depends on shared data alone.
-INSTANTIATE_TEST_SUITE_P(InTree, MeshFile, testing::Values((kTestDataDir / "icosphere.ply").string()));
+INSTANTIATE_TEST_SUITE_P(InTree, MeshFile, testing::Values((glint_test::kTestDataDir / "icosphere.ply").string()));
 // The 871k-triangle dragon is left to glint-bench, whose checksums compare it with Embree.
 INSTANTIATE_TEST_SUITE_P(Stanford, MeshFile,
-                         testing::Values((kMeshDir / "stanford_bunny.ply").string(),
-                                         (kMeshDir / "stanford_lucy_100k.ply").string(),
-                                         (kMeshDir / "stanford_dragon_res2.ply").string()));
+                         testing::Values((glint_test::kSharedMeshDir / "stanford_bunny.ply").string(),
+                                         (glint_test::kSharedMeshDir / "stanford_lucy_100k.ply").string(),
+                                         (glint_test::kSharedMeshDir / "stanford_dragon_res2.ply").string()));
 
 /// An icosahedron subdivided `levels` times and pushed onto the unit sphere: closed,
 /// every edge shared by two triangles.

@@ -19,7 +19,7 @@ using namespace glint;
 
 namespace {
 
-constexpr uint32_t kSide = 24;
+constexpr uint32_t kAdaptiveSide = 24;
 
 /// A quad of radiance 1 whose slanted edge crosses the view of an orthographic camera, on a
 /// black background: pixels wholly on either side have no spread, pixels on the edge do.
@@ -36,29 +36,29 @@ RenderScene edge_scene() {
     return RenderScene(std::move(scene));
 }
 
-Film render(const RenderScene& scene, uint32_t samples_per_axis, std::optional<AdaptiveSampling> adaptive,
-            uint32_t threads = 0) {
+Film render_adaptive(const RenderScene& scene, uint32_t samples_per_axis, std::optional<AdaptiveSampling> adaptive,
+                     uint32_t threads = 0) {
     RenderSettings settings;
-    settings.width = settings.height = kSide;
+    settings.width = settings.height = kAdaptiveSide;
     settings.samples_per_axis = samples_per_axis;
     settings.adaptive = adaptive;
     settings.threads = threads;
-    Film film(kSide, kSide);
+    Film film(kAdaptiveSide, kAdaptiveSide);
     (void)WhittedIntegrator().render(scene, settings, film);
     return film;
 }
 
 double rms_error(const Film& film, const Film& reference) {
     double sum = 0.0;
-    for (uint32_t y = 0; y < kSide; ++y)
-        for (uint32_t x = 0; x < kSide; ++x) sum += std::pow(film.at(x, y).r - reference.at(x, y).r, 2.0);
-    return std::sqrt(sum / (kSide * kSide));
+    for (uint32_t y = 0; y < kAdaptiveSide; ++y)
+        for (uint32_t x = 0; x < kAdaptiveSide; ++x) sum += std::pow(film.at(x, y).r - reference.at(x, y).r, 2.0);
+    return std::sqrt(sum / (kAdaptiveSide * kAdaptiveSide));
 }
 
 uint64_t total_samples(const Film& film) {
     uint64_t total = 0;
-    for (uint32_t y = 0; y < kSide; ++y)
-        for (uint32_t x = 0; x < kSide; ++x) total += film.samples_at(x, y);
+    for (uint32_t y = 0; y < kAdaptiveSide; ++y)
+        for (uint32_t x = 0; x < kAdaptiveSide; ++x) total += film.samples_at(x, y);
     return total;
 }
 
@@ -101,15 +101,15 @@ TEST(AdaptiveSampling, ErrorIsTheRelativeStandardErrorOfTheMean) {
 
 TEST(AdaptiveSampling, SpendsSamplesOnlyNearTheEdge) {
     const RenderScene scene = edge_scene();
-    const Film reference = render(scene, 32, std::nullopt);
-    const Film film = render(scene, 8, AdaptiveSampling{.min_spp = 4, .threshold = 0.01f});
+    const Film reference = render_adaptive(scene, 32, std::nullopt);
+    const Film film = render_adaptive(scene, 8, AdaptiveSampling{.min_spp = 4, .threshold = 0.01f});
     auto on_edge = [&](uint32_t x, uint32_t y) {
         const float v = reference.at(x, y).r;
         return v > 0.0f && v < 1.0f;
     };
     int edge_pixels = 0, far_pixels = 0;
-    for (uint32_t y = 0; y < kSide; ++y)
-        for (uint32_t x = 0; x < kSide; ++x) {
+    for (uint32_t y = 0; y < kAdaptiveSide; ++y)
+        for (uint32_t x = 0; x < kAdaptiveSide; ++x) {
             const uint32_t spp = film.samples_at(x, y);
             if (on_edge(x, y)) {
                 ++edge_pixels;
@@ -117,24 +117,25 @@ TEST(AdaptiveSampling, SpendsSamplesOnlyNearTheEdge) {
                 continue;
             }
             bool near = false;
-            for (uint32_t ny = y > 0 ? y - 1 : 0; ny <= std::min(y + 1, kSide - 1); ++ny)
-                for (uint32_t nx = x > 0 ? x - 1 : 0; nx <= std::min(x + 1, kSide - 1); ++nx) near |= on_edge(nx, ny);
+            for (uint32_t ny = y > 0 ? y - 1 : 0; ny <= std::min(y + 1, kAdaptiveSide - 1); ++ny)
+                for (uint32_t nx = x > 0 ? x - 1 : 0; nx <= std::min(x + 1, kAdaptiveSide - 1); ++nx)
+                    near |= on_edge(nx, ny);
             if (near) continue;  // a neighbour's contrast may refine it
             ++far_pixels;
             EXPECT_EQ(spp, 4u) << "pixel " << x << "," << y << " away from the edge";
         }
-    EXPECT_GT(edge_pixels, int(kSide / 2));
-    EXPECT_GT(far_pixels, int(kSide * kSide / 2));
+    EXPECT_GT(edge_pixels, int(kAdaptiveSide / 2));
+    EXPECT_GT(far_pixels, int(kAdaptiveSide * kAdaptiveSide / 2));
 }
 
 TEST(AdaptiveSampling, NoWorseThanUniformSamplingForTheSameNumberOfSamples) {
     const RenderScene scene = edge_scene();
-    const Film reference = render(scene, 32, std::nullopt);  // 1024 spp
-    const Film adaptive = render(scene, 16, AdaptiveSampling{.min_spp = 4, .threshold = 0.01f});
-    const double average = double(total_samples(adaptive)) / (kSide * kSide);
+    const Film reference = render_adaptive(scene, 32, std::nullopt);  // 1024 spp
+    const Film adaptive = render_adaptive(scene, 16, AdaptiveSampling{.min_spp = 4, .threshold = 0.01f});
+    const double average = double(total_samples(adaptive)) / (kAdaptiveSide * kAdaptiveSide);
     // Uniform sampling with at least as many samples in all: the next square count.
     const auto n = uint32_t(std::ceil(std::sqrt(average)));
-    const Film uniform = render(scene, n, std::nullopt);
+    const Film uniform = render_adaptive(scene, n, std::nullopt);
     ASSERT_GE(total_samples(uniform), total_samples(adaptive));
     const double adaptive_error = rms_error(adaptive, reference), uniform_error = rms_error(uniform, reference);
     EXPECT_LT(adaptive_error, uniform_error) << "adaptive " << average << " spp on average, uniform " << n * n;
@@ -145,9 +146,9 @@ TEST(AdaptiveSampling, NoWorseThanUniformSamplingForTheSameNumberOfSamples) {
 TEST(AdaptiveSampling, OneAndTwoThreadsRenderTheSameImage) {
     const RenderScene scene = edge_scene();
     const AdaptiveSampling adaptive{.min_spp = 2, .threshold = 0.02f};
-    const Film one = render(scene, 8, adaptive, 1), two = render(scene, 8, adaptive, 2);
-    for (uint32_t y = 0; y < kSide; ++y)
-        for (uint32_t x = 0; x < kSide; ++x) {
+    const Film one = render_adaptive(scene, 8, adaptive, 1), two = render_adaptive(scene, 8, adaptive, 2);
+    for (uint32_t y = 0; y < kAdaptiveSide; ++y)
+        for (uint32_t x = 0; x < kAdaptiveSide; ++x) {
             EXPECT_EQ(one.at(x, y), two.at(x, y));
             EXPECT_EQ(one.samples_at(x, y), two.samples_at(x, y));
         }
@@ -156,16 +157,16 @@ TEST(AdaptiveSampling, OneAndTwoThreadsRenderTheSameImage) {
 TEST(AdaptiveSampling, ExplainTakesThePixelsSamples) {
     const RenderScene scene = edge_scene();
     RenderSettings settings;
-    settings.width = settings.height = kSide;
+    settings.width = settings.height = kAdaptiveSide;
     settings.samples_per_axis = 8;
     settings.adaptive = AdaptiveSampling{.min_spp = 4, .threshold = 0.01f};
-    Film film(kSide, kSide);
+    Film film(kAdaptiveSide, kAdaptiveSide);
     const WhittedIntegrator integrator;
     (void)integrator.render(scene, settings, film);
-    for (uint32_t x = 0; x < kSide; ++x) {
-        const PixelExplanation e = integrator.explain(scene, settings, x, kSide / 2);
-        EXPECT_EQ(e.samples.size(), film.samples_at(x, kSide / 2));
-        EXPECT_EQ(e.value, film.at(x, kSide / 2));
+    for (uint32_t x = 0; x < kAdaptiveSide; ++x) {
+        const PixelExplanation e = integrator.explain(scene, settings, x, kAdaptiveSide / 2);
+        EXPECT_EQ(e.samples.size(), film.samples_at(x, kAdaptiveSide / 2));
+        EXPECT_EQ(e.value, film.at(x, kAdaptiveSide / 2));
     }
 }
 

@@ -1,6 +1,7 @@
 // The BSDF seam: each lobe's sample() against its pdf (chi-square), delta lobe weights
 // against Fresnel, and the Lambert lobe's albedo.
 
+#include "bsdf_at_hit.h"
 #include "chi2.h"
 
 #include "glint/materials/bsdf.h"
@@ -13,18 +14,15 @@
 
 using namespace glint;
 
+using glint_test::bsdf_of;
+using glint_test::from_polar;
+using glint_test::kUp;
+
 namespace {
-
-const Vec3 kUp(0.0f, 0.0f, 1.0f);
-
-Vec3 from_polar(float theta_degrees) {
-    const float t = radians(theta_degrees);
-    return Vec3(std::sin(t), 0.0f, std::cos(t));
-}
 
 /// chi-square of the smooth part: u_lobe is drawn from u's first coordinate's complement so
 /// one uniform pair drives both the lobe choice and the direction, like an integrator would.
-Chi2Result bsdf_chi2(const Bsdf& bsdf, int test_count = 1, uint64_t seed = 7) {
+Chi2Result hemisphere_chi2(const Bsdf& bsdf, int test_count = 1, uint64_t seed = 7) {
     pcg32 lobe_rng(seed, 99);
     auto sample = [&](Vec2 u) -> std::optional<Vec3> {
         const float u_lobe = float(lobe_rng() >> 8) * 0x1p-24f;
@@ -44,16 +42,11 @@ Material lambert(float kd) {
     return m;
 }
 
-/// The Bsdf of `m`, which has no textures: its values are its own at every hit.
-Bsdf bsdf_of(const Material& m, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media) {
-    return Bsdf(m, material_at_hit(m, Vec2(), Vec3()), n, ng, wo, media);
-}
-
 }  // namespace
 
 TEST(BsdfSampling, LambertMatchesItsPdf) {
     const Bsdf bsdf = bsdf_of(lambert(0.8f), kUp, kUp, from_polar(30.0f), {});
-    const Chi2Result r = bsdf_chi2(bsdf);
+    const Chi2Result r = hemisphere_chi2(bsdf);
     EXPECT_TRUE(r.passed) << r.report;
 }
 
@@ -65,7 +58,7 @@ TEST(BsdfSampling, BlinnPhongLobeMatchesItsPdfAtSeveralExponentsAndAngles) {
             m.specular = Color(0.5f);
             m.shininess = shininess;
             const Bsdf bsdf = bsdf_of(m, kUp, kUp, from_polar(theta), {});
-            const Chi2Result r = bsdf_chi2(bsdf, 6);  // six tests: Šidák-corrected level
+            const Chi2Result r = hemisphere_chi2(bsdf, 6);  // six tests: Šidák-corrected level
             EXPECT_TRUE(r.passed) << "s = " << shininess << ", θo = " << theta << "\n" << r.report;
         }
     }
@@ -78,7 +71,7 @@ TEST(BsdfSampling, MixtureOfLambertHighlightAndMirrorMatchesItsPdf) {
     m.shininess = 20.0f;
     m.reflectivity = Color(0.3f);  // a delta lobe: its samples are rejected from the smooth histogram
     const Bsdf bsdf = bsdf_of(m, kUp, kUp, from_polar(50.0f), {});
-    const Chi2Result r = bsdf_chi2(bsdf);
+    const Chi2Result r = hemisphere_chi2(bsdf);
     EXPECT_TRUE(r.passed) << r.report;
 }
 

@@ -8,6 +8,7 @@
 #include "glint/scene_format/toml_scene_loader.h"
 
 #include "example_scenes.h"
+#include "source_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +21,7 @@
 namespace glint {
 namespace {
 
-const std::filesystem::path kSource(GLINT_SOURCE_DIR);
-constexpr uint32_t kWidth = 64, kHeight = 48;
+constexpr uint32_t kPacketsWidth = 64, kPacketsHeight = 48;
 
 /// Another integrator's Li(), with camera rays traced one at a time (the default
 /// Li_given_first_hit and takes_first_hits).
@@ -51,24 +51,25 @@ int differing_pixels(const Image& a, const Image& b) {
 class CameraPackets : public testing::TestWithParam<std::string> {};
 
 TEST_P(CameraPackets, RenderTheImageOfSingleRays) {
-    LoadedScene loaded = load_toml_scene(kSource / "scenes" / (GetParam() + ".toml"));
-    loaded.settings.width = kWidth;
-    loaded.settings.height = kHeight;
+    LoadedScene loaded = load_toml_scene(glint_test::kSourceDir / "scenes" / (GetParam() + ".toml"));
+    loaded.settings.width = kPacketsWidth;
+    loaded.settings.height = kPacketsHeight;
     const RenderScene scene(std::move(loaded.scene));
     const std::unique_ptr<Integrator> integrator = make_integrator(loaded.settings);
     const OneRayAtATime one_by_one(*integrator);
     const std::vector<Aov> aovs = {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Spp, Aov::Variance};
-    Film packets(kWidth, kHeight), singles(kWidth, kHeight);
-    AovFilm packet_aovs(kWidth, kHeight, aovs), single_aovs(kWidth, kHeight, aovs);
+    Film packets(kPacketsWidth, kPacketsHeight), singles(kPacketsWidth, kPacketsHeight);
+    AovFilm packet_aovs(kPacketsWidth, kPacketsHeight, aovs), single_aovs(kPacketsWidth, kPacketsHeight, aovs);
     integrator->render(scene, loaded.settings, packets, {}, nullptr, nullptr, &packet_aovs);
     one_by_one.render(scene, loaded.settings, singles, {}, nullptr, nullptr, &single_aovs);
     // The radiance and every AOV channel.
-    EXPECT_EQ(differing_pixels(packet_aovs.append_to(packets.to_image()), single_aovs.append_to(singles.to_image())),
-              0)
-        << "of " << kWidth * kHeight << (integrator->takes_first_hits() ? "" : " (this integrator takes no packets)");
+    EXPECT_EQ(differing_pixels(packet_aovs.append_to(packets.to_image()), single_aovs.append_to(singles.to_image())), 0)
+        << "of " << kPacketsWidth * kPacketsHeight
+        << (integrator->takes_first_hits() ? "" : " (this integrator takes no packets)");
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, CameraPackets, testing::ValuesIn(glint_test::example_scene_names(kSource)),
+INSTANTIATE_TEST_SUITE_P(Scenes, CameraPackets,
+                         testing::ValuesIn(glint_test::example_scene_names(glint_test::kSourceDir)),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace

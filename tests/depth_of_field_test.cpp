@@ -22,7 +22,7 @@ using namespace glint;
 namespace {
 
 constexpr float kFov = 40.0f;
-constexpr int kSide = 48;
+constexpr int kFilmSide = 48;
 
 Camera lens_camera(float aperture_radius, float focus_distance, uint32_t blades = 0) {
     Camera camera = Camera::perspective({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, kFov);
@@ -42,9 +42,9 @@ Film render_emitter(const Camera& camera, const Vec3& center, float radius, uint
     scene.camera = camera;
     const RenderScene prepared(std::move(scene));
     RenderSettings settings;
-    settings.width = settings.height = kSide;
+    settings.width = settings.height = kFilmSide;
     settings.samples_per_axis = samples_per_axis;
-    Film film(kSide, kSide);
+    Film film(kFilmSide, kFilmSide);
     (void)WhittedIntegrator().render(prepared, settings, film);
     return film;
 }
@@ -52,27 +52,27 @@ Film render_emitter(const Camera& camera, const Vec3& center, float radius, uint
 /// Radius in pixels of the bright disk of `film` around its centre: the area of the pixels
 /// above half the plateau (the mean of the pixels within `inner` pixels of the centre).
 float disk_radius(const Film& film, float inner) {
-    const float c = 0.5f * float(kSide);
+    const float c = 0.5f * float(kFilmSide);
     double plateau = 0.0;
     int inner_count = 0;
-    for (int y = 0; y < kSide; ++y)
-        for (int x = 0; x < kSide; ++x)
+    for (int y = 0; y < kFilmSide; ++y)
+        for (int x = 0; x < kFilmSide; ++x)
             if (std::hypot(float(x) + 0.5f - c, float(y) + 0.5f - c) < inner) {
                 plateau += film.at(uint32_t(x), uint32_t(y)).r;
                 ++inner_count;
             }
     plateau /= inner_count;
     int bright = 0;
-    for (int y = 0; y < kSide; ++y)
-        for (int x = 0; x < kSide; ++x) bright += film.at(uint32_t(x), uint32_t(y)).r > 0.5 * plateau;
+    for (int y = 0; y < kFilmSide; ++y)
+        for (int x = 0; x < kFilmSide; ++x) bright += film.at(uint32_t(x), uint32_t(y)).r > 0.5 * plateau;
     return std::sqrt(float(bright) / kPi);
 }
 
-/// The thin-lens circle of confusion of a point at depth z, in pixels of a kSide-high image:
-/// A·|1 − z_f/z| on the plane of focus, whose half-height z_f·tan(fov/2) is kSide/2 pixels.
+/// The thin-lens circle of confusion of a point at depth z, in pixels of a kFilmSide-high image:
+/// A·|1 − z_f/z| on the plane of focus, whose half-height z_f·tan(fov/2) is kFilmSide/2 pixels.
 float circle_of_confusion_pixels(float aperture_radius, float focus_distance, float z) {
     const float on_focus_plane = aperture_radius * std::abs(1.0f - focus_distance / z);
-    return on_focus_plane / (focus_distance * std::tan(radians(kFov) * 0.5f)) * (0.5f * float(kSide));
+    return on_focus_plane / (focus_distance * std::tan(radians(kFov) * 0.5f)) * (0.5f * float(kFilmSide));
 }
 
 }  // namespace
@@ -82,10 +82,10 @@ TEST(ThinLens, EveryLensRayMeetsThePinholeRayOnThePlaneOfFocus) {
     const Camera pinhole = lens_camera(0.0f, focus);
     const Camera lens = lens_camera(0.3f, focus, 6);
     for (const Vec2 film : {Vec2(3.5f, 7.25f), Vec2(24.0f, 24.0f), Vec2(47.0f, 1.0f)}) {
-        const Ray through = pinhole.generate_ray(film.x, film.y, kSide, kSide);
+        const Ray through = pinhole.generate_ray(film.x, film.y, kFilmSide, kFilmSide);
         const Vec3 target = through.at(focus / -through.direction.z);  // on the plane z = −focus
         for (const Vec2 u : {Vec2(0.1f, 0.9f), Vec2(0.5f, 0.5f), Vec2(0.99f, 0.02f)}) {
-            const Ray r = lens.generate_ray(film.x, film.y, kSide, kSide, u);
+            const Ray r = lens.generate_ray(film.x, film.y, kFilmSide, kFilmSide, u);
             EXPECT_NEAR(length(r.direction), 1.0f, 1e-6f);
             EXPECT_NEAR(r.origin.z, 0.0f, 1e-6f);  // the aperture lies in the lens plane
             EXPECT_LE(std::hypot(r.origin.x, r.origin.y), 0.3f + 1e-6f);
@@ -141,13 +141,13 @@ TEST(DepthOfField, APointOnThePlaneOfFocusLightsOnePixel) {
     const Camera camera = lens_camera(0.25f, focus);
     // The point the centre of pixel (17, 30) sees on the plane of focus; the pixel spans
     // 2·5·tan 20°/48 ≈ 0.076 there, the sphere 0.02.
-    const Ray through = lens_camera(0.0f, focus).generate_ray(17.5f, 30.5f, kSide, kSide);
+    const Ray through = lens_camera(0.0f, focus).generate_ray(17.5f, 30.5f, kFilmSide, kFilmSide);
     const Vec3 center = through.at(focus / -through.direction.z);
     const Film film = render_emitter(camera, center, 0.01f, 4);
     EXPECT_GT(film.at(17, 30).r, 0.0f);
     int lit = 0;
-    for (uint32_t y = 0; y < kSide; ++y)
-        for (uint32_t x = 0; x < kSide; ++x) lit += film.at(x, y).r > 0.0f;
+    for (uint32_t y = 0; y < kFilmSide; ++y)
+        for (uint32_t x = 0; x < kFilmSide; ++x) lit += film.at(x, y).r > 0.0f;
     EXPECT_EQ(lit, 1);
 }
 
@@ -159,7 +159,7 @@ TEST(DepthOfField, APointOffFocusBlursToTheCircleOfConfusion) {
     for (const auto& [aperture, focus] : {std::pair{0.6f, 2.5f}, std::pair{1.5f, 8.0f}}) {
         const float expected = circle_of_confusion_pixels(aperture, focus, 5.0f);
         ASSERT_GT(expected, 5.0f);
-        ASSERT_LT(expected, 0.45f * kSide);
+        ASSERT_LT(expected, 0.45f * kFilmSide);
         const Film film = render_emitter(lens_camera(aperture, focus), {0.0f, 0.0f, -5.0f}, 0.1f, 32);
         EXPECT_NEAR(disk_radius(film, 0.5f * expected), expected, 1.0f) << "focus " << focus;
     }
@@ -185,11 +185,11 @@ TEST(DepthOfField, OneAndTwoThreadsRenderTheSameImage) {
     scene.camera = lens_camera(0.3f, 4.0f, 5);
     const RenderScene prepared(std::move(scene));
     RenderSettings settings;
-    settings.width = settings.height = kSide;
+    settings.width = settings.height = kFilmSide;
     settings.samples_per_axis = 3;
     auto render = [&](uint32_t threads) {
         settings.threads = threads;
-        Film film(kSide, kSide);
+        Film film(kFilmSide, kFilmSide);
         (void)WhittedIntegrator().render(prepared, settings, film);
         return film.to_image().pixels;
     };

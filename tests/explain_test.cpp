@@ -4,6 +4,7 @@
 
 #include "glint/image/image_io.h"
 #include "glint/math/vec3.h"
+#include "source_paths.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -19,7 +20,6 @@ using glint_test::run_cli;
 using nlohmann::json;
 
 const std::string kCli = GLINT_CLI;
-const fs::path kScenes = fs::path(GLINT_SOURCE_DIR) / "scenes";
 
 json explain_json(const std::string& args, const fs::path& dir) {
     const glint_test::CliResult r = run_cli(kCli, "explain " + args + " --json", dir);
@@ -27,7 +27,7 @@ json explain_json(const std::string& args, const fs::path& dir) {
     return json::parse(r.out);
 }
 
-float channel(const json& rgb, int c) { return rgb.at(c).get<float>(); }
+float rgb_channel(const json& rgb, int c) { return rgb.at(c).get<float>(); }
 
 /// Every sample's rays add up to its radiance, and the value is the filter-weighted mean of
 /// the samples; counts the ray kinds seen.
@@ -49,17 +49,17 @@ void expect_consistent(const json& pixel, std::map<std::string, int>& kinds) {
             if (i > 0) {
                 EXPECT_LT(ray.at("parent").get<int>(), int(i)) << "a parent comes before its children";
             }
-            for (int c = 0; c < 3; ++c) sum[c] += channel(ray.at("contribution"), c);
+            for (int c = 0; c < 3; ++c) sum[c] += rgb_channel(ray.at("contribution"), c);
         }
         for (int c = 0; c < 3; ++c) {
-            const float radiance = channel(sample.at("radiance"), c);
+            const float radiance = rgb_channel(sample.at("radiance"), c);
             EXPECT_NEAR(sum[c], radiance, 1e-5f * std::abs(radiance) + 1e-6f)
                 << "pixel " << pixel.at("pixel") << " sample " << sample.at("index") << " channel " << c;
             value_sum[c] += w * radiance;
         }
     }
     for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(value_sum[c] / weight_sum, channel(pixel.at("value"), c),
+        EXPECT_NEAR(value_sum[c] / weight_sum, rgb_channel(pixel.at("value"), c),
                     1e-5 * std::abs(value_sum[c] / weight_sum) + 1e-6);
 }
 
@@ -78,7 +78,7 @@ std::map<std::string, int> check_against_render(const fs::path& scene, const std
             const json pixel = explain_json(
                 scene.string() + " " + settings + " --pixel " + std::to_string(x) + "," + std::to_string(y), dir);
             for (int c = 0; c < 3; ++c)
-                EXPECT_EQ(channel(pixel.at("value"), c), image.at(x, y, c))
+                EXPECT_EQ(rgb_channel(pixel.at("value"), c), image.at(x, y, c))
                     << "pixel " << x << "," << y << " channel " << c;
             expect_consistent(pixel, kinds);
         }
@@ -89,8 +89,8 @@ std::map<std::string, int> check_against_render(const fs::path& scene, const std
 }  // namespace
 
 TEST(Explain, WhittedValueIsTheRenderedPixelAndTheRaysAddUp) {
-    const auto kinds =
-        check_against_render(kScenes / "whitted1980.toml", "--width 64 --height 48 --spp 4 --filter mitchell");
+    const auto kinds = check_against_render(glint_test::kScenesDir / "whitted1980.toml",
+                                            "--width 64 --height 48 --spp 4 --filter mitchell");
     // The scene's mirror and glass spheres give every kind of Whitted ray.
     EXPECT_GT(kinds.at("camera"), 0);
     EXPECT_GT(kinds.count("reflection") ? kinds.at("reflection") : 0, 0);
@@ -101,13 +101,13 @@ TEST(Explain, WhittedValueIsTheRenderedPixelAndTheRaysAddUp) {
 TEST(Explain, WhittedWithAreaLightsValueIsTheRenderedPixel) {
     // Area lights' light samples: the product a shadow ray adds must not be fused into the
     // sum differently when it is recorded (3 of these 30 pixels differed in the last bit).
-    const auto kinds =
-        check_against_render(kScenes / "soft_shadows.toml", "--width 64 --height 48 --spp 4 --filter box");
+    const auto kinds = check_against_render(glint_test::kScenesDir / "soft_shadows.toml",
+                                            "--width 64 --height 48 --spp 4 --filter box");
     EXPECT_GT(kinds.count("shadow") ? kinds.at("shadow") : 0, 0);
 }
 
 TEST(Explain, PathValueIsTheRenderedPixelAndTheRaysAddUp) {
-    const auto kinds = check_against_render(kScenes / "cornell_area.toml",
+    const auto kinds = check_against_render(glint_test::kScenesDir / "cornell_area.toml",
                                             "--width 40 --height 40 --spp 4 --integrator path --depth 4");
     EXPECT_GT(kinds.count("bounce") ? kinds.at("bounce") : 0, 0);
     EXPECT_GT(kinds.count("shadow") ? kinds.at("shadow") : 0, 0);
@@ -300,8 +300,8 @@ material = "clear glass"
 
 TEST(Explain, TextNamesObjectsMaterialsAndLights) {
     const fs::path dir = glint_test::temp_dir();
-    const glint_test::CliResult r =
-        run_cli(kCli, "explain " + (kScenes / "whitted1980.toml").string() + " --pixel 320,200 --spp 1", dir);
+    const glint_test::CliResult r = run_cli(
+        kCli, "explain " + (glint_test::kScenesDir / "whitted1980.toml").string() + " --pixel 320,200 --spp 1", dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     for (const char* expected :
          {"pixel (320, 200) of 640×480, 1 spp, whitted integrator, seed 0", "sample 0 at film (",
@@ -313,7 +313,8 @@ TEST(Explain, TextNamesObjectsMaterialsAndLights) {
 
 TEST(Explain, OneSampleCanBeChosen) {
     const fs::path dir = glint_test::temp_dir();
-    const json e = explain_json((kScenes / "spheres.toml").string() + " --pixel 10,10 --spp 4 --sample 2", dir);
+    const json e =
+        explain_json((glint_test::kScenesDir / "spheres.toml").string() + " --pixel 10,10 --spp 4 --sample 2", dir);
     ASSERT_EQ(e.at("samples").size(), 4u);
     for (const json& sample : e.at("samples"))
         EXPECT_EQ(sample.contains("rays"), sample.at("index") == 2) << sample.at("index");
@@ -322,7 +323,7 @@ TEST(Explain, OneSampleCanBeChosen) {
 
 TEST(Explain, MistakesGetAReasonAndExitOne) {
     const fs::path dir = glint_test::temp_dir();
-    const std::string scene = (kScenes / "spheres.toml").string();
+    const std::string scene = (glint_test::kScenesDir / "spheres.toml").string();
     const std::pair<std::string, std::string> cases[] = {
         {scene + " --pixel 640,0", "--pixel 640,0: outside the 640×480 image (columns 0 to 639, rows 0 to 479)"},
         {scene + " --pixel 3", "--pixel: expected X,Y (column and row from the top-left, whole numbers); got '3'"},

@@ -10,6 +10,7 @@
 #include "glint/scene/render_scene.h"
 #include "glint/scene/scene.h"
 #include "glint/scene_format/toml_scene_loader.h"
+#include "source_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -23,9 +24,7 @@ using namespace glint;
 
 namespace {
 
-const std::filesystem::path kScenes = std::filesystem::path(GLINT_SOURCE_DIR) / "scenes";
-
-Film render(const RenderScene& scene, const RenderSettings& settings) {
+Film render_glossy(const RenderScene& scene, const RenderSettings& settings) {
     Film film(settings.width, settings.height);
     make_integrator(settings)->render(scene, settings, film);
     return film;
@@ -79,7 +78,7 @@ TEST(GlossyRender, RoughnessZeroIsBitIdenticalToNoRoughness) {
     // whitted1980 has a mirror, a glass and a diffuse floor; the same file with `roughness =
     // 0` in every material must give the same bits with both integrators, and a roughness
     // just above 0 must not (so that the comparison can fail).
-    const std::string text = read_text(kScenes / "whitted1980.toml");
+    const std::string text = read_text(glint_test::kScenesDir / "whitted1980.toml");
     auto with_roughness = [&](const std::string& value) {
         std::string t = text;
         int materials = 0;
@@ -93,12 +92,12 @@ TEST(GlossyRender, RoughnessZeroIsBitIdenticalToNoRoughness) {
     };
     for (const char* integrator : {"whitted", "path"}) {
         auto film_of = [&](const std::string& scene_text) {
-            LoadedScene loaded = load_toml_scene_string(scene_text, "whitted1980.toml", kScenes);
+            LoadedScene loaded = load_toml_scene_string(scene_text, "whitted1980.toml", glint_test::kScenesDir);
             loaded.settings.width = 48;
             loaded.settings.height = 36;
             loaded.settings.integrator = integrator;
             const RenderScene prepared(std::move(loaded.scene));
-            return render(prepared, loaded.settings);
+            return render_glossy(prepared, loaded.settings);
         };
         const Film plain = film_of(text);
         EXPECT_TRUE(identical(plain, film_of(with_roughness("0")))) << integrator;
@@ -117,12 +116,13 @@ TEST(GlossyRender, IdenticalForAnyThreadCount) {
         settings.seed = 9;
         settings.glossy_samples = 3;
         settings.threads = 1;
-        const Film one = render(prepared, settings);
+        const Film one = render_glossy(prepared, settings);
         settings.threads = 2;
-        const Film two = render(prepared, settings);
+        const Film two = render_glossy(prepared, settings);
         EXPECT_TRUE(identical(one, two)) << name;
         settings.seed = 10;
-        EXPECT_FALSE(identical(one, render(prepared, settings))) << name << ": another seed must give another image";
+        EXPECT_FALSE(identical(one, render_glossy(prepared, settings)))
+            << name << ": another seed must give another image";
     }
 }
 

@@ -19,7 +19,7 @@ namespace {
 
 constexpr float kSqrtHalf = std::numbers::sqrt2_v<float> / 2.0f;
 
-glint::GltfScene load(const fs::path& path, std::optional<glint::Shutter> shutter) {
+glint::GltfScene load_animated(const fs::path& path, std::optional<glint::Shutter> shutter) {
     glint::GltfOptions options;
     options.shutter = shutter;
     return glint::load_gltf_scene(path, options);
@@ -76,7 +76,7 @@ void expect_turned(const glint::Transform& t, float degrees) {
 
 TEST(GltfAnimation, TimePosesTheNodeWithoutMotion) {
     const fs::path path = sliding_quad().write(glint_test::temp_dir(), "slide");
-    const glint::GltfScene at_half = load(path, instant(0.5f));
+    const glint::GltfScene at_half = load_animated(path, instant(0.5f));
     const glint::SceneObject quad = object(at_half, "quad");
     EXPECT_FALSE(quad.motion);
     EXPECT_EQ(quad.world_from_object.matrix().m[0][3], 1.0f);  // exactly: (1 - ½)·0 + ½·2
@@ -85,13 +85,13 @@ TEST(GltfAnimation, TimePosesTheNodeWithoutMotion) {
     EXPECT_TRUE(has_line(at_half.report.mapped, "1 animation(s) posed at time 0.5"));
     EXPECT_FALSE(has_line(at_half.report.ignored, "animation"));
     // Held before the first key and after the last (§3.11).
-    EXPECT_EQ(origin(object(load(path, instant(-3.0f)), "quad")).x, 0.0f);
-    EXPECT_EQ(origin(object(load(path, instant(7.0f)), "quad")).x, 2.0f);
+    EXPECT_EQ(origin(object(load_animated(path, instant(-3.0f)), "quad")).x, 0.0f);
+    EXPECT_EQ(origin(object(load_animated(path, instant(7.0f)), "quad")).x, 2.0f);
 }
 
 TEST(GltfAnimation, ShutterGivesTheMovingNodeMotionKeys) {
     const fs::path path = sliding_quad().write(glint_test::temp_dir(), "slide");
-    const glint::GltfScene s = load(path, glint::Shutter{0.0f, 1.0f});
+    const glint::GltfScene s = load_animated(path, glint::Shutter{0.0f, 1.0f});
     const glint::SceneObject quad = object(s, "quad");
     ASSERT_TRUE(quad.motion);
     EXPECT_EQ(quad.motion->keys().front().time, 0.0f);
@@ -106,7 +106,7 @@ TEST(GltfAnimation, ShutterGivesTheMovingNodeMotionKeys) {
     EXPECT_TRUE(has_line(s.report.mapped, "1 animation(s) sampled over the shutter [0, 1]"));
     EXPECT_TRUE(has_line(s.report.mapped, "1 object(s) move while the shutter is open"));
     // A shutter that sees only part of the keys: keyed over [0.25, 0.5].
-    const glint::SceneObject part = object(load(path, glint::Shutter{0.25f, 0.5f}), "quad");
+    const glint::SceneObject part = object(load_animated(path, glint::Shutter{0.25f, 0.5f}), "quad");
     ASSERT_TRUE(part.motion);
     EXPECT_EQ(part.motion->keys().front().time, 0.25f);
     EXPECT_EQ(part.motion->keys().back().time, 0.5f);
@@ -115,9 +115,9 @@ TEST(GltfAnimation, ShutterGivesTheMovingNodeMotionKeys) {
 
 TEST(GltfAnimation, RotationIsSlerpedNotBlended) {
     const fs::path path = turning_quad().write(glint_test::temp_dir(), "turn");
-    expect_turned(object(load(path, instant(0.5f)), "quad").world_from_object, 45.0f);
-    expect_turned(object(load(path, instant(0.25f)), "quad").world_from_object, 22.5f);
-    const glint::SceneObject moving = object(load(path, glint::Shutter{0.0f, 1.0f}), "quad");
+    expect_turned(object(load_animated(path, instant(0.5f)), "quad").world_from_object, 45.0f);
+    expect_turned(object(load_animated(path, instant(0.25f)), "quad").world_from_object, 22.5f);
+    const glint::SceneObject moving = object(load_animated(path, glint::Shutter{0.0f, 1.0f}), "quad");
     ASSERT_TRUE(moving.motion);
     expect_turned(moving.motion->at(0.5f), 45.0f);
     expect_turned(moving.motion->at(0.3f), 27.0f);
@@ -127,12 +127,12 @@ TEST(GltfAnimation, StepHoldsThePreviousKey) {
     AnimatedQuad quad;
     quad.channel(0, "translation", {0.0f, 1.0f, 2.0f}, {0, 0, 0, 2, 0, 0, 4, 0, 0}, "STEP");
     const fs::path path = quad.write(glint_test::temp_dir(), "step");
-    EXPECT_EQ(origin(object(load(path, instant(0.99f)), "quad")).x, 0.0f);
-    EXPECT_EQ(origin(object(load(path, instant(1.0f)), "quad")).x, 2.0f);
-    EXPECT_EQ(origin(object(load(path, instant(1.5f)), "quad")).x, 2.0f);
-    EXPECT_EQ(origin(object(load(path, instant(2.5f)), "quad")).x, 4.0f);
+    EXPECT_EQ(origin(object(load_animated(path, instant(0.99f)), "quad")).x, 0.0f);
+    EXPECT_EQ(origin(object(load_animated(path, instant(1.0f)), "quad")).x, 2.0f);
+    EXPECT_EQ(origin(object(load_animated(path, instant(1.5f)), "quad")).x, 2.0f);
+    EXPECT_EQ(origin(object(load_animated(path, instant(2.5f)), "quad")).x, 4.0f);
     // Over a shutter across the jump: the old pose up to the key, the new one from it.
-    const glint::SceneObject blurred = object(load(path, glint::Shutter{0.5f, 1.5f}), "quad");
+    const glint::SceneObject blurred = object(load_animated(path, glint::Shutter{0.5f, 1.5f}), "quad");
     ASSERT_TRUE(blurred.motion);
     EXPECT_EQ(origin(blurred, 0.999f).x, 0.0f);
     EXPECT_EQ(origin(blurred, 1.0f).x, 2.0f);
@@ -146,7 +146,7 @@ TEST(GltfAnimation, CubicSplineIsTheHermiteCurve) {
         quad.channel(0, "translation", {0.0f, 2.0f}, {0, 0, 0, 0, 0, 0, b0, 0, 0, a1, 0, 0, 2, 0, 0, 0, 0, 0},
                      "CUBICSPLINE");
         const fs::path path = quad.write(glint_test::temp_dir(), "spline");
-        return origin(object(load(path, instant(time)), "quad")).x;
+        return origin(object(load_animated(path, instant(time)), "quad")).x;
     };
     const double s = 0.25, td = 2.0;  // time 0.5
     const double h10 = s * s * s - 2 * s * s + s, h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
@@ -156,7 +156,7 @@ TEST(GltfAnimation, CubicSplineIsTheHermiteCurve) {
     // A spline between rotations is normalised: with zero tangents the midpoint is half of
     // each key, a quaternion of length cos 22.5°, which unnormalised would shrink the quad.
     const fs::path turn = turning_quad("CUBICSPLINE").write(glint_test::temp_dir(), "turn");
-    expect_turned(object(load(turn, instant(0.5f)), "quad").world_from_object, 45.0f);
+    expect_turned(object(load_animated(turn, instant(0.5f)), "quad").world_from_object, 45.0f);
 }
 
 TEST(GltfAnimation, AnimatedParentMovesItsStaticChild) {
@@ -166,10 +166,10 @@ TEST(GltfAnimation, AnimatedParentMovesItsStaticChild) {
     // The parent turns 90° about +y: the child, 1 away, moves on a quarter circle.
     quad.channel(0, "rotation", {0.0f, 1.0f}, {0, 0, 0, 1, 0, kSqrtHalf, 0, kSqrtHalf});
     const fs::path path = quad.write(glint_test::temp_dir(), "parent");
-    const glint::Vec3 at_half = origin(object(load(path, instant(0.5f)), "quad"));
+    const glint::Vec3 at_half = origin(object(load_animated(path, instant(0.5f)), "quad"));
     EXPECT_NEAR(at_half.x, kSqrtHalf, 1e-5f);
     EXPECT_NEAR(at_half.z, -kSqrtHalf, 1e-5f);
-    const glint::SceneObject moving = object(load(path, glint::Shutter{0.0f, 1.0f}), "quad");
+    const glint::SceneObject moving = object(load_animated(path, glint::Shutter{0.0f, 1.0f}), "quad");
     ASSERT_TRUE(moving.motion);
     // Between motion keys the child goes on a chord: samples close enough keep it within
     // 0.1 % of the arc's radius anywhere over the shutter.
@@ -188,7 +188,7 @@ TEST(GltfAnimation, OnlyObjectsThatMoveGetMotion) {
     quad.channel(0, "translation", {0.0f, 1.0f}, {0, 0, 0, 2, 0, 0});
     // Keys outside the shutter: the animation has ended and nothing moves.
     quad.channel(1, "translation", {-2.0f, -1.0f}, {0, 0, 0, 0, 5, 0});
-    const glint::GltfScene s = load(quad.write(glint_test::temp_dir(), "two"), glint::Shutter{0.0f, 1.0f});
+    const glint::GltfScene s = load_animated(quad.write(glint_test::temp_dir(), "two"), glint::Shutter{0.0f, 1.0f});
     EXPECT_TRUE(object(s, "quad").motion);
     EXPECT_FALSE(object(s, "still").motion);
     EXPECT_EQ(origin(object(s, "still")).y, 5.0f);
@@ -203,7 +203,7 @@ TEST(GltfAnimation, WithoutAShutterTheFileLoadsAsBefore) {
     still.json().erase("animations");
     const fs::path without = still.write(dir, "without");
 
-    const glint::GltfScene a = load(with, std::nullopt), b = load(without, std::nullopt);
+    const glint::GltfScene a = load_animated(with, std::nullopt), b = load_animated(without, std::nullopt);
     ASSERT_EQ(a.loaded.scene.objects().size(), b.loaded.scene.objects().size());
     for (std::size_t i = 0; i < a.loaded.scene.objects().size(); ++i) {
         const glint::SceneObject &x = a.loaded.scene.objects()[i], &y = b.loaded.scene.objects()[i];
@@ -216,7 +216,7 @@ TEST(GltfAnimation, WithoutAShutterTheFileLoadsAsBefore) {
     EXPECT_EQ(a.report.mapped, b.report.mapped);
 
     // A shutter changes nothing for a file without animations.
-    const glint::GltfScene c = load(without, glint::Shutter{0.0f, 1.0f});
+    const glint::GltfScene c = load_animated(without, glint::Shutter{0.0f, 1.0f});
     ASSERT_EQ(c.loaded.scene.objects().size(), b.loaded.scene.objects().size());
     for (std::size_t i = 0; i < b.loaded.scene.objects().size(); ++i)
         EXPECT_EQ(c.loaded.scene.objects()[i].world_from_object, b.loaded.scene.objects()[i].world_from_object);
@@ -236,7 +236,7 @@ TEST(GltfAnimation, CamerasLightsAndEmittersStayWhereTheyAreAtOpen) {
     quad.channel(0, "translation", {0.0f, 1.0f}, {0, 0, 0, 2, 0, 0});
     quad.channel(1, "translation", {0.0f, 1.0f}, {0, 5, 0, 1, 5, 0});
     quad.channel(2, "translation", {0.0f, 1.0f}, {0, 3, 0, 0, 4, 0});
-    const glint::GltfScene s = load(quad.write(glint_test::temp_dir(), "rig"), glint::Shutter{0.5f, 1.0f});
+    const glint::GltfScene s = load_animated(quad.write(glint_test::temp_dir(), "rig"), glint::Shutter{0.5f, 1.0f});
     EXPECT_NEAR(s.loaded.scene.camera.eye().x, 0.5f, 1e-6f);
     EXPECT_FALSE(s.loaded.scene.camera.moves());
     EXPECT_TRUE(has_line(s.report.ignored, "camera animation blur"));

@@ -61,7 +61,7 @@ const glint::Material& only_material(const glint::GltfScene& s) { return s.loade
 Color f0(const Color& base, float metallic) { return glint::lerp(metallic, Color(0.04f), base); }
 Color diffuse(const Color& base, float metallic) { return base * (1.0f - metallic); }
 
-void expect_near(const Color& a, const Color& b, const char* what) {
+void expect_color_near(const Color& a, const Color& b, const char* what) {
     EXPECT_NEAR(a.r, b.r, 1e-6f) << what;
     EXPECT_NEAR(a.g, b.g, 1e-6f) << what;
     EXPECT_NEAR(a.b, b.b, 1e-6f) << what;
@@ -108,8 +108,8 @@ TEST(GltfMetallicRoughness, GreenIsRoughnessAndBlueIsMetalness) {
     const glint::MaterialAtHit at = glint::material_at_hit(only_material(s), kCentre, {});
     const Color base(0.8f, 0.6f, 0.4f);
     EXPECT_NEAR(at.roughness, data(g), 1e-6f);
-    expect_near(at.reflectivity, f0(base, data(b)), "F0 = mix(0.04, base, B)");
-    expect_near(at.diffuse, diffuse(base, data(b)), "kd = base·(1 − B)");
+    expect_color_near(at.reflectivity, f0(base, data(b)), "F0 = mix(0.04, base, B)");
+    expect_color_near(at.diffuse, diffuse(base, data(b)), "kd = base·(1 − B)");
 }
 
 TEST(GltfMetallicRoughness, TextureValuesAreLinearNotSrgbDecoded) {
@@ -117,7 +117,7 @@ TEST(GltfMetallicRoughness, TextureValuesAreLinearNotSrgbDecoded) {
     const auto s = load_with_texture(textured(1.0f, 1.0f), {{128, 128, 128}});
     const glint::MaterialAtHit at = glint::material_at_hit(only_material(s), kCentre, {});
     EXPECT_NEAR(at.roughness, data(128), 1e-6f);
-    expect_near(at.reflectivity, f0(Color(0.8f, 0.6f, 0.4f), data(128)), "metalness 0.502");
+    expect_color_near(at.reflectivity, f0(Color(0.8f, 0.6f, 0.4f), data(128)), "metalness 0.502");
 }
 
 TEST(GltfMetallicRoughness, FactorsMultiplyTheTexture) {
@@ -126,8 +126,8 @@ TEST(GltfMetallicRoughness, FactorsMultiplyTheTexture) {
     const glint::MaterialAtHit at = glint::material_at_hit(only_material(s), kCentre, {});
     const Color base(0.8f, 0.6f, 0.4f);
     EXPECT_NEAR(at.roughness, roughness_factor * data(128), 1e-6f);
-    expect_near(at.reflectivity, f0(base, metallic_factor * data(128)), "F0 with metalness factor × B");
-    expect_near(at.diffuse, diffuse(base, metallic_factor * data(128)), "kd with metalness factor × B");
+    expect_color_near(at.reflectivity, f0(base, metallic_factor * data(128)), "F0 with metalness factor × B");
+    expect_color_near(at.diffuse, diffuse(base, metallic_factor * data(128)), "kd with metalness factor × B");
 }
 
 TEST(GltfMetallicRoughness, BaseColourTextureTintsF0AndDiffuse) {
@@ -141,8 +141,8 @@ TEST(GltfMetallicRoughness, BaseColourTextureTintsF0AndDiffuse) {
         glint::load_gltf_scene(glint_test::write_gltf(dir, "quad", quad_json_with(material, {"mr.png", "base.png"})));
     const glint::MaterialAtHit at = glint::material_at_hit(only_material(s), kCentre, {});
     const Color base(0.5f * 1.0f, glint::srgb_to_linear(data(128)), 0.0f);
-    expect_near(at.reflectivity, f0(base, data(128)), "F0 = mix(0.04, factor × texture, metalness)");
-    expect_near(at.diffuse, diffuse(base, data(128)), "kd = factor × texture × (1 − metalness)");
+    expect_color_near(at.reflectivity, f0(base, data(128)), "F0 = mix(0.04, factor × texture, metalness)");
+    expect_color_near(at.diffuse, diffuse(base, data(128)), "kd = factor × texture × (1 − metalness)");
     EXPECT_EQ(at.roughness, 1.0f);
 }
 
@@ -156,7 +156,8 @@ TEST(GltfMetallicRoughness, OneImageAsBaseColourAndMetallicRoughnessIsDecodedBot
     EXPECT_EQ(s.report.textures, 2u) << "one scene texture per decoding";
     const glint::MaterialAtHit at = glint::material_at_hit(only_material(s), kCentre, {});
     EXPECT_NEAR(at.roughness, data(128), 1e-6f);
-    expect_near(at.diffuse, diffuse(Color(glint::srgb_to_linear(data(128))), data(128)), "sRGB base, linear metalness");
+    expect_color_near(at.diffuse, diffuse(Color(glint::srgb_to_linear(data(128))), data(128)),
+                      "sRGB base, linear metalness");
 }
 
 TEST(GltfMetallicRoughness, TextureInsideAGlbIsReadAsData) {
@@ -173,7 +174,7 @@ TEST(GltfMetallicRoughness, TextureInsideAGlbIsReadAsData) {
     const auto s = glint::load_gltf_scene(dir / "quad.glb");
     const glint::MaterialAtHit at = glint::material_at_hit(only_material(s), kCentre, {});
     EXPECT_NEAR(at.roughness, data(128), 1e-6f);
-    expect_near(at.reflectivity, f0(Color(0.8f, 0.6f, 0.4f), data(64)), "metalness 64/255 from the blue channel");
+    expect_color_near(at.reflectivity, f0(Color(0.8f, 0.6f, 0.4f), data(64)), "metalness 64/255 from the blue channel");
 }
 
 TEST(GltfMetallicRoughness, TransmissionRoughnessFollowsTheTexture) {

@@ -45,7 +45,7 @@ json info(const json& transform = nullptr) {
 }
 
 /// Load the quad with `material` on the 4×1 texture, KHR_texture_transform declared used.
-glint::GltfScene load(const json& material) {
+glint::GltfScene load_with_material(const json& material) {
     const auto dir = glint_test::temp_dir();
     glint_test::write_png(dir / "four.png", kTexels);
     json j = glint_test::quad_json_with(material, {"four.png"});
@@ -55,10 +55,9 @@ glint::GltfScene load(const json& material) {
 
 /// A white dielectric whose base colour is texture 0 seen through `transform`.
 glint::GltfScene base_colour(const json& transform) {
-    return load({{"pbrMetallicRoughness",
-                  {{"baseColorFactor", {1, 1, 1, 1}},
-                   {"metallicFactor", 0},
-                   {"baseColorTexture", info(transform)}}}});
+    return load_with_material(
+        {{"pbrMetallicRoughness",
+          {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"baseColorTexture", info(transform)}}}});
 }
 
 /// The diffuse colour at uv of the only material, undecoded from sRGB back to 8-bit data.
@@ -91,7 +90,7 @@ namespace {
 
 /// The quad rendered whole by the Whitted integrator (the loader's framing camera and
 /// default light), 16×12, 1 sample per pixel.
-glint::Film render(glint::GltfScene file) {
+glint::Film render_textured(glint::GltfScene file) {
     const glint::RenderScene prepared(std::move(file.loaded.scene));
     glint::RenderSettings settings;
     settings.width = 16;
@@ -135,11 +134,11 @@ glint::GltfScene magnified(const json& transform) {
 }  // namespace
 
 TEST(GltfTextureTransform, TheRenderedQuadChangesWithTheTransformAndNotWithTheIdentity) {
-    const glint::Film plain = render(magnified(nullptr));
-    EXPECT_EQ(difference(render(magnified(json::object())), plain), 0.0f) << "the identity renders the same";
+    const glint::Film plain = render_textured(magnified(nullptr));
+    EXPECT_EQ(difference(render_textured(magnified(json::object())), plain), 0.0f) << "the identity renders the same";
     for (const json& transform : {json{{"offset", {0.5, 0.0}}}, json{{"scale", {3.0, 1.0}}},
                                   json{{"rotation", std::numbers::pi / 2}}})
-        EXPECT_GT(difference(render(magnified(transform)), plain), 1.0f) << transform.dump();
+        EXPECT_GT(difference(render_textured(magnified(transform)), plain), 1.0f) << transform.dump();
 }
 
 TEST(GltfTextureTransform, IsMappedAndTheViewIsNotCountedAsATexture) {
@@ -167,7 +166,7 @@ TEST(GltfTextureTransform, AppliesToMetallicRoughnessEmissionAndAlpha) {
                              {"metallicFactor", 1},
                              {"roughnessFactor", 1},
                              {"metallicRoughnessTexture", info(one)}}}};
-    const auto s = load(material);
+    const auto s = load_with_material(material);
     const glint::Material& m = s.loaded.scene.materials()[0];
     // Roughness is the green channel: texel 1's 1 at texel 0, texel 2's 0 at texel 1 (without
     // the extension, 0 and 1).
@@ -191,7 +190,7 @@ TEST(GltfTextureTransform, TexCoordOfTheExtensionOverridesTheTextureInfos) {
     EXPECT_TRUE(noted(base_colour({{"texCoord", 1}})));
     json material = {{"pbrMetallicRoughness", {{"baseColorTexture", info({{"texCoord", 0}})}}}};
     material["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 1;
-    EXPECT_FALSE(noted(load(material))) << "the extension's texCoord 0 replaces the textureInfo's 1";
+    EXPECT_FALSE(noted(load_with_material(material))) << "the extension's texCoord 0 replaces the textureInfo's 1";
 }
 
 TEST(GltfTextureTransform, MalformedValuesNameTheirJsonPath) {

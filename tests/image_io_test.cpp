@@ -14,8 +14,7 @@
 using namespace glint;
 namespace fs = std::filesystem;
 
-namespace {
-
+// Not in an anonymous namespace: the test classes TEST_F derives from it are external.
 class ImageIoTest : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -39,8 +38,6 @@ protected:
 
     fs::path dir_;
 };
-
-}  // namespace
 
 TEST_F(ImageIoTest, FloatFormatsRoundTripLinearValues) {
     const Image img = gradient();

@@ -33,7 +33,7 @@ void expect_color_near(const Color& a, const Color& b, float eps) {
     EXPECT_NEAR(a.b, b.b, eps);
 }
 
-Material lambert(const Color& kd, const Color& ka = Color(0.0f)) {
+Material lambert_material(const Color& kd, const Color& ka = Color(0.0f)) {
     Material m;
     m.diffuse = kd;
     m.ambient = ka;
@@ -45,7 +45,7 @@ Material lambert(const Color& kd, const Color& ka = Color(0.0f)) {
 TEST(WhittedRadiance, LambertSphereUnderInverseSquarePointLight) {
     Scene scene;
     const Color kd(0.7f, 0.5f, 0.3f);
-    scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), scene.add_material(lambert(kd)));
+    scene.add_object(std::make_shared<Sphere>(Vec3(0, 0, 0), 1.0f), scene.add_material(lambert_material(kd)));
     const Vec3 light_pos(3, 4, 5);
     const Color intensity(20.0f, 10.0f, 5.0f);
     scene.add_light(std::make_unique<PointLight>(light_pos, intensity, Falloff::InverseSquare));
@@ -65,7 +65,7 @@ TEST(WhittedRadiance, LambertSphereUnderInverseSquarePointLight) {
 TEST(WhittedRadiance, AssignmentLightsDoNotFallOff) {
     Scene scene;
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)),
-                     scene.add_material(lambert(Color(0.5f))));
+                     scene.add_material(lambert_material(Color(0.5f))));
     scene.add_light(std::make_unique<PointLight>(Vec3(0, 100, 0), Color(0.8f), Falloff::None));
     const RenderScene prepared(std::move(scene));
     // Straight below the light: cos θ = 1, no 1/d²: L = kd · I.
@@ -77,7 +77,7 @@ TEST(WhittedRadiance, PlaneUnderDirectionalLightRendersTheFormulaEverywhere) {
     const Color kd(0.6f), ka(0.5f);
     scene.ambient_light = Color(0.1f);
     scene.add_object(std::make_shared<Quad>(Vec3(-100, 0, 100), Vec3(200, 0, 0), Vec3(0, 0, -200)),
-                     scene.add_material(lambert(kd, ka)));
+                     scene.add_material(lambert_material(kd, ka)));
     const Vec3 dir = normalize(Vec3(1, -2, 0.5f));  // direction the light travels
     const Color e(2.0f);
     scene.add_light(std::make_unique<DirectionalLight>(dir, e));
@@ -101,7 +101,7 @@ TEST(WhittedRadiance, ShadowedPointGetsOnlyAmbient) {
     Scene scene;
     const Color kd(0.8f), ka(0.3f);
     scene.ambient_light = Color(0.2f);
-    const uint32_t m = scene.add_material(lambert(kd, ka));
+    const uint32_t m = scene.add_material(lambert_material(kd, ka));
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)), m);
     scene.add_object(std::make_shared<Sphere>(Vec3(0, 2, 0), 0.5f), m);  // blocker above the origin
     scene.add_light(std::make_unique<PointLight>(Vec3(0, 5, 0), Color(1.0f), Falloff::None));
@@ -115,7 +115,7 @@ TEST(WhittedRadiance, ShadowedPointGetsOnlyAmbient) {
 TEST(WhittedRadiance, LightBehindTheSurfaceContributesNothing) {
     Scene scene;
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)),
-                     scene.add_material(lambert(Color(1.0f))));
+                     scene.add_material(lambert_material(Color(1.0f))));
     scene.add_light(std::make_unique<PointLight>(Vec3(0, -5, 0), Color(1.0f), Falloff::None));
     const RenderScene prepared(std::move(scene));
     expect_color_near(radiance(prepared, Ray({0, 1, 0}, {0, -1, 0})), Color(0.0f), 0.0f);
@@ -123,7 +123,7 @@ TEST(WhittedRadiance, LightBehindTheSurfaceContributesNothing) {
 
 TEST(WhittedRadiance, BlinnPhongHighlightAtTheMirrorDirection) {
     Scene scene;
-    Material m = lambert(Color(0.0f));
+    Material m = lambert_material(Color(0.0f));
     m.specular = Color(0.5f);
     m.shininess = 20.0f;
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)), scene.add_material(m));
@@ -141,7 +141,7 @@ TEST(WhittedRadiance, BlinnPhongHighlightAtTheMirrorDirection) {
 TEST(WhittedRadiance, MirrorReflectsTheBackgroundWeightedByReflectivity) {
     Scene scene;
     scene.background = Background::constant(Color(0.2f, 0.4f, 0.8f));
-    Material mirror = lambert(Color(0.0f));
+    Material mirror = lambert_material(Color(0.0f));
     mirror.reflectivity = Color(0.9f, 0.5f, 0.25f);
     scene.add_object(std::make_shared<Quad>(Vec3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20)),
                      scene.add_material(mirror));
@@ -158,7 +158,7 @@ TEST(WhittedRadiance, GlassSlabHeadOnFollowsFresnel) {
     Scene scene;
     const Color b(1.0f, 0.5f, 0.25f);
     scene.background = Background::constant(b);
-    Material glass = lambert(Color(0.0f));
+    Material glass = lambert_material(Color(0.0f));
     glass.transparency = 1.0f;
     glass.ior = 1.5f;
     scene.add_object(std::make_shared<Box>(Vec3(-5, -5, -0.5f), Vec3(5, 5, 0.5f)), scene.add_material(glass));
@@ -173,7 +173,7 @@ TEST(WhittedRadiance, GlassShowsItsBlinnPhongHighlight) {
     // A clear dielectric (t = 1) takes no diffuse light, but its highlight is the surface's:
     // head-on under a light straight above, the glass slab adds ks·E to the Fresnel result.
     Scene scene;
-    Material glass = lambert(Color(0.8f));
+    Material glass = lambert_material(Color(0.8f));
     glass.transparency = 1.0f;
     glass.ior = 1.5f;
     glass.specular = Color(0.5f);
@@ -189,7 +189,7 @@ TEST(WhittedRadiance, TotalInternalReflectionKeepsLightInside) {
     // A ray inside glass meeting the surface beyond the critical angle is reflected whole,
     // so none of the (white) background outside reaches it.
     Scene scene;
-    Material glass = lambert(Color(0.0f));
+    Material glass = lambert_material(Color(0.0f));
     glass.transparency = 1.0f;
     glass.ior = 1.5f;
     scene.add_object(std::make_shared<Box>(Vec3(-10, -1, -10), Vec3(10, 0, 10)), scene.add_material(glass));
@@ -213,9 +213,9 @@ TEST(WhittedRadiance, TotalInternalReflectionKeepsLightInside) {
 
 TEST(WhittedRadiance, PerVertexMaterialsBlendWithBarycentrics) {
     Scene scene;
-    const uint32_t red = scene.add_material(lambert(Color(1, 0, 0)));
-    const uint32_t green = scene.add_material(lambert(Color(0, 1, 0)));
-    const uint32_t blue = scene.add_material(lambert(Color(0, 0, 1)));
+    const uint32_t red = scene.add_material(lambert_material(Color(1, 0, 0)));
+    const uint32_t green = scene.add_material(lambert_material(Color(0, 1, 0)));
+    const uint32_t blue = scene.add_material(lambert_material(Color(0, 0, 1)));
     MeshData d;
     d.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, -1}};
     d.indices = {0, 1, 2};

@@ -52,7 +52,7 @@ glint::MeshFile sample_file() {
     return file;
 }
 
-std::string load_error(std::string_view bytes) {
+std::string mesh_load_error(std::string_view bytes) {
     try {
         (void)glint::mesh_file_from_bytes(bytes, "model.obj");
     } catch (const glint::SceneError& e) {
@@ -113,12 +113,12 @@ TEST(MeshFileBytes, EverythingComesBackAsItWas) {
 TEST(MeshFileBytes, EveryCutShortRecordIsRefused) {
     const std::string bytes = glint::to_bytes(sample_file());
     for (std::size_t size = 0; size < bytes.size(); ++size)
-        EXPECT_NE(load_error(std::string_view(bytes).substr(0, size))
+        EXPECT_NE(mesh_load_error(std::string_view(bytes).substr(0, size))
                       .find("model.obj: the importer process handed "
                             "back damaged data"),
                   std::string::npos)
             << "cut at " << size;
-    EXPECT_NE(load_error(bytes + "x").find("data after the end"), std::string::npos);
+    EXPECT_NE(mesh_load_error(bytes + "x").find("data after the end"), std::string::npos);
 }
 
 TEST(MeshFileBytes, AHugeCountIsRefusedBeforeAllocating) {
@@ -127,7 +127,8 @@ TEST(MeshFileBytes, AHugeCountIsRefusedBeforeAllocating) {
     const std::size_t positions = sizeof(uint64_t) + 1 + sizeof(uint32_t) + 4;
     const uint64_t huge = uint64_t(1) << 60;
     std::memcpy(bytes.data() + positions, &huge, sizeof huge);
-    EXPECT_NE(load_error(bytes).find("a length runs past the end of the data"), std::string::npos) << load_error(bytes);
+    EXPECT_NE(mesh_load_error(bytes).find("a length runs past the end of the data"), std::string::npos)
+        << mesh_load_error(bytes);
 }
 
 TEST(MeshFileBytes, AMeshThatDoesNotValidateIsRefused) {
@@ -138,8 +139,9 @@ TEST(MeshFileBytes, AMeshThatDoesNotValidateIsRefused) {
         sizeof(uint64_t) + 1 + sizeof(uint32_t) + 4 + sizeof(uint64_t) + 4 * sizeof(glint::Vec3) + sizeof(uint64_t);
     const uint32_t past_the_end = 99;
     std::memcpy(bytes.data() + first_index, &past_the_end, sizeof past_the_end);
-    EXPECT_NE(load_error(bytes).find("model.obj: the importer process handed back damaged data"), std::string::npos)
-        << load_error(bytes);
+    EXPECT_NE(mesh_load_error(bytes).find("model.obj: the importer process handed back damaged data"),
+              std::string::npos)
+        << mesh_load_error(bytes);
 }
 
 TEST(MeshFileBytes, AnImageWhoseSizeDoesNotMatchItsPixelsIsRefused) {
@@ -147,5 +149,6 @@ TEST(MeshFileBytes, AnImageWhoseSizeDoesNotMatchItsPixelsIsRefused) {
     auto wrong = std::make_shared<glint::Image>(*file.material_images[1]);
     wrong->width = 3;
     file.material_images[1] = wrong;
-    EXPECT_NE(load_error(glint::to_bytes(file)).find("an image's size does not match its pixels"), std::string::npos);
+    EXPECT_NE(mesh_load_error(glint::to_bytes(file)).find("an image's size does not match its pixels"),
+              std::string::npos);
 }

@@ -2,6 +2,7 @@
 // visible normals, chi-square tests of every sampler against its density (tests/chi2.h),
 // white furnaces, and the limit roughness → 0 against the delta lobes.
 
+#include "bsdf_at_hit.h"
 #include "chi2.h"
 
 #include "glint/materials/bsdf.h"
@@ -20,17 +21,14 @@
 
 using namespace glint;
 
+using glint_test::bsdf_of;
+using glint_test::from_polar;
+using glint_test::kUp;
+
 namespace {
 
-const Vec3 kUp(0.0f, 0.0f, 1.0f);
-
 // The chi-square tests below form one family (Šidák-corrected to 1% in all).
-constexpr int kChi2Tests = 22;
-
-Vec3 from_polar(float theta_degrees, float phi_degrees = 0.0f) {
-    const float t = radians(theta_degrees), p = radians(phi_degrees);
-    return Vec3(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
-}
+constexpr int kMicrofacetChi2Tests = 22;
 
 /// ∫ f dω over the directions with cos θ in [z0, z1], in (cos θ, φ) where dω = d(cos θ) dφ.
 double integrate_band(const std::function<double(const Vec3&)>& f, double z0, double z1) {
@@ -65,14 +63,9 @@ Material rough_glass(float roughness, float ior = 1.5f) {
     return m;
 }
 
-/// The Bsdf of `m`, which has no textures: its values are its own at every hit.
-Bsdf bsdf_of(const Material& m, const Vec3& n, const Vec3& ng, const Vec3& wo, Interface media) {
-    return Bsdf(m, material_at_hit(m, Vec2(), Vec3()), n, ng, wo, media);
-}
-
 /// chi-square of Bsdf::sample (or sample_glossy) against pdf (glossy_pdf) over the whole
 /// sphere; u_lobe from its own stream, as an integrator draws it.
-Chi2Result bsdf_chi2(const Bsdf& bsdf, bool glossy_only, uint64_t seed) {
+Chi2Result sphere_chi2(const Bsdf& bsdf, bool glossy_only, uint64_t seed) {
     pcg32 lobe_rng(seed, 99);
     auto sample = [&](Vec2 u) -> std::optional<Vec3> {
         const float u_lobe = chi2_detail::uniform_float(lobe_rng);
@@ -81,15 +74,15 @@ Chi2Result bsdf_chi2(const Bsdf& bsdf, bool glossy_only, uint64_t seed) {
         return s->wi;
     };
     auto pdf = [&](const Vec3& w) { return double(glossy_only ? bsdf.glossy_pdf(w) : bsdf.pdf(w)); };
-    return chi2_spherical_grid(sample, pdf, {20, 24, -1.0, 1.0}, {300'000, seed, 0.01, kChi2Tests});
+    return chi2_spherical_grid(sample, pdf, {20, 24, -1.0, 1.0}, {300'000, seed, 0.01, kMicrofacetChi2Tests});
 }
 
 /// Mean and standard error of the red channel of `samples` Bsdf::sample weights (0 where
 /// it returns nothing); transmitted weights are multiplied by `transmission_scale`.
-struct Estimate {
+struct AlbedoEstimate {
     double mean = 0.0, stderr_ = 0.0;
 };
-Estimate sampled_albedo(const Bsdf& bsdf, int samples, float transmission_scale = 1.0f, uint64_t seed = 3) {
+AlbedoEstimate sampled_albedo(const Bsdf& bsdf, int samples, float transmission_scale = 1.0f, uint64_t seed = 3) {
     pcg32 rng(seed);
     double sum = 0.0, sum2 = 0.0;
     for (int i = 0; i < samples; ++i) {
@@ -155,9 +148,10 @@ TEST(MicrofacetChi2, VisibleNormalSamplesFollowTheirDensity) {
     for (const auto& c : cases) {
         const TrowbridgeReitz d(c.alpha.x, c.alpha.y);
         for (const Vec3 w : {from_polar(0.0f), from_polar(50.0f, 40.0f), from_polar(85.0f, 250.0f)}) {
-            const Chi2Result r = chi2_spherical_grid([&](Vec2 u) { return std::optional<Vec3>(d.sample_wm(w, u)); },
-                                                     [&](const Vec3& wm) { return double(d.pdf(w, wm)); },
-                                                     {12, 24, c.cos_min, 1.0}, {300'000, 11, 0.01, kChi2Tests});
+            const Chi2Result r =
+                chi2_spherical_grid([&](Vec2 u) { return std::optional<Vec3>(d.sample_wm(w, u)); },
+                                    [&](const Vec3& wm) { return double(d.pdf(w, wm)); }, {12, 24, c.cos_min, 1.0},
+                                    {300'000, 11, 0.01, kMicrofacetChi2Tests});
             EXPECT_TRUE(r.passed) << c.alpha << ", w = " << w << "\n" << r.report;
         }
     }
@@ -171,7 +165,7 @@ TEST(MicrofacetChi2, GlossyConductorSamplesFollowThePdf) {
             const Bsdf bsdf =
                 bsdf_of(rough_metal(roughness, Color(0.9f, 0.6f, 0.3f), true), kUp, kUp, from_polar(theta), {});
             ASSERT_TRUE(bsdf.has_glossy_lobes());
-            const Chi2Result r = bsdf_chi2(bsdf, false, 21);
+            const Chi2Result r = sphere_chi2(bsdf, false, 21);
             EXPECT_TRUE(r.passed) << "roughness " << roughness << ", θo = " << theta << "\n" << r.report;
         }
     }
@@ -180,7 +174,7 @@ TEST(MicrofacetChi2, GlossyConductorSamplesFollowThePdf) {
     m.diffuse = Color(0.4f);
     const Bsdf mixed = bsdf_of(m, kUp, kUp, from_polar(45.0f), {});
     for (const bool glossy_only : {false, true}) {
-        const Chi2Result r = bsdf_chi2(mixed, glossy_only, 22);
+        const Chi2Result r = sphere_chi2(mixed, glossy_only, 22);
         EXPECT_TRUE(r.passed) << (glossy_only ? "glossy lobe alone" : "mixture") << "\n" << r.report;
     }
 }
@@ -199,7 +193,7 @@ TEST(MicrofacetChi2, RoughDielectricSamplesFollowThePdfEnteringAndLeaving) {
                  {0.3f, 60.0f, {1.5f, 1.0f}}};
     for (const auto& [roughness, theta, media] : cases) {
         const Bsdf bsdf = bsdf_of(rough_glass(roughness), kUp, kUp, from_polar(theta, 10.0f), media);
-        const Chi2Result r = bsdf_chi2(bsdf, false, 31);
+        const Chi2Result r = sphere_chi2(bsdf, false, 31);
         EXPECT_TRUE(r.passed) << "roughness " << roughness << ", η " << media.eta_from << " → " << media.eta_to
                               << ", θo = " << theta << "\n"
                               << r.report;
@@ -252,7 +246,7 @@ TEST(GlossyFurnace, WhiteRoughConductorReflectsAtMostEverything) {
     for (const float roughness : {0.05f, 0.2f, 0.5f, 1.0f}) {
         for (const float theta : {0.0f, 30.0f, 60.0f, 80.0f, 89.0f}) {
             const Bsdf bsdf = bsdf_of(rough_metal(roughness), kUp, kUp, from_polar(theta), {});
-            const Estimate e = sampled_albedo(bsdf, kSamples);
+            const AlbedoEstimate e = sampled_albedo(bsdf, kSamples);
             EXPECT_LE(e.mean, 1.0 + 4.0 * e.stderr_ + 1e-6) << "roughness " << roughness << ", θo = " << theta;
             if (roughness <= 0.05f && theta <= 60.0f) {
                 EXPECT_GT(e.mean, 0.99) << "roughness " << roughness << ", θo = " << theta;
@@ -281,7 +275,7 @@ TEST(GlossyFurnace, SampledAlbedoAgreesWithUniformIntegrationOfEval) {
         }
         const double mean = sum / kSamples;
         const double se = std::sqrt(std::max(0.0, sum2 / kSamples - mean * mean) / kSamples);
-        const Estimate sampled = sampled_albedo(*bsdf, kSamples);
+        const AlbedoEstimate sampled = sampled_albedo(*bsdf, kSamples);
         EXPECT_NEAR(sampled.mean, mean, 5.0 * std::sqrt(se * se + sampled.stderr_ * sampled.stderr_))
             << (bsdf == &metal ? "metal" : "glass");
     }
@@ -295,7 +289,7 @@ TEST(GlossyFurnace, RoughDielectricReflectsAndTransmitsAtMostEverything) {
             const float eta = media.eta_to / media.eta_from;
             for (const float theta : {0.0f, 30.0f, 60.0f, 85.0f}) {
                 const Bsdf bsdf = bsdf_of(rough_glass(roughness), kUp, kUp, from_polar(theta), media);
-                const Estimate e = sampled_albedo(bsdf, kSamples, eta * eta);
+                const AlbedoEstimate e = sampled_albedo(bsdf, kSamples, eta * eta);
                 EXPECT_LE(e.mean, 1.0 + 4.0 * e.stderr_ + 1e-6)
                     << "roughness " << roughness << ", η = " << eta << ", θo = " << theta;
                 if (roughness <= 0.05f && theta <= 30.0f) {

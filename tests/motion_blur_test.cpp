@@ -20,10 +20,10 @@ using namespace glint;
 
 namespace {
 
-// An orthographic camera sees x in [-4, 4], y in [-1, 1] on kWidth × kHeight pixels of
+// An orthographic camera sees x in [-4, 4], y in [-1, 1] on kBlurWidth × kBlurHeight pixels of
 // 0.25 × 0.25; a sphere of radius kRadius of radiance 1 moves along x from kFrom to kTo
 // while the shutter is open, over a black background.
-constexpr uint32_t kWidth = 32, kHeight = 8;
+constexpr uint32_t kBlurWidth = 32, kBlurHeight = 8;
 constexpr double kRadius = 0.5, kFrom = -2.0, kTo = 2.0, kPixel = 0.25;
 
 Scene moving_sphere_scene(const Shutter& shutter) {
@@ -66,10 +66,10 @@ double expected_pixel(uint32_t px, uint32_t py, const Shutter& shutter) {
     return sum / (kSteps * kSteps);
 }
 
-Film render(Scene scene, const Integrator& integrator, uint32_t samples_per_axis, uint32_t threads = 0) {
+Film render_blurred(Scene scene, const Integrator& integrator, uint32_t samples_per_axis, uint32_t threads = 0) {
     RenderSettings settings;
-    settings.width = scene.camera.projection() == Projection::Orthographic ? kWidth : 48;
-    settings.height = scene.camera.projection() == Projection::Orthographic ? kHeight : 36;
+    settings.width = scene.camera.projection() == Projection::Orthographic ? kBlurWidth : 48;
+    settings.height = scene.camera.projection() == Projection::Orthographic ? kBlurHeight : 36;
     settings.samples_per_axis = samples_per_axis;
     settings.threads = threads;
     const RenderScene prepared(std::move(scene));
@@ -90,10 +90,10 @@ void expect_coverage(const Integrator& integrator, const Shutter& shutter) {
     // deviation at most √(p(1 − p)/1024) ≤ 0.016, and 5σ bounds it (stratification only
     // shrinks it).
     constexpr uint32_t kAxis = 32;
-    const Film film = render(moving_sphere_scene(shutter), integrator, kAxis);
+    const Film film = render_blurred(moving_sphere_scene(shutter), integrator, kAxis);
     int lit = 0;
-    for (uint32_t y = 0; y < kHeight; ++y)
-        for (uint32_t x = 0; x < kWidth; ++x) {
+    for (uint32_t y = 0; y < kBlurHeight; ++y)
+        for (uint32_t x = 0; x < kBlurWidth; ++x) {
             const double p = expected_pixel(x, y, shutter);
             const double sigma = std::sqrt(p * (1.0 - p) / double(kAxis * kAxis));
             EXPECT_NEAR(film.at(x, y).r, p, 5.0 * sigma + 2e-3) << "pixel " << x << "," << y;
@@ -115,7 +115,7 @@ TEST(MotionBlur, TheShutterChoosesTheStretchOfTheMotionSeen) {
 }
 
 TEST(MotionBlur, AnInstantShowsTheSphereSharpWhereItIsThen) {
-    const Film film = render(moving_sphere_scene({0.5f, 0.5f}), WhittedIntegrator(), 4);
+    const Film film = render_blurred(moving_sphere_scene({0.5f, 0.5f}), WhittedIntegrator(), 4);
     // At time 0.5 the sphere is centred at x = 0: pixel 16 (x in [0, 0.25]) on the middle
     // rows is covered, pixel 6 (x in [−2.5, −2.25]) is not.
     EXPECT_FLOAT_EQ(film.at(16, 3).r, 1.0f);
@@ -128,13 +128,13 @@ TEST(MotionBlur, AStaticSceneIgnoresTheShutterBitForBit) {
     with_shutter.camera.set_shutter({0.2f, 0.7f});
     ASSERT_FALSE(with_shutter.has_motion());
     // The path tracer: every sampler dimension after the camera's steers its paths.
-    const Film plain = render(make_spheres_scene(), PathIntegrator(), 2);
-    EXPECT_TRUE(same_pixels(plain, render(std::move(with_shutter), PathIntegrator(), 2)));
+    const Film plain = render_blurred(make_spheres_scene(), PathIntegrator(), 2);
+    EXPECT_TRUE(same_pixels(plain, render_blurred(std::move(with_shutter), PathIntegrator(), 2)));
 }
 
 TEST(MotionBlur, OneAndTwoThreadsRenderTheSameImage) {
-    const Film one = render(moving_sphere_scene({0.0f, 1.0f}), PathIntegrator(), 4, 1);
-    const Film two = render(moving_sphere_scene({0.0f, 1.0f}), PathIntegrator(), 4, 2);
+    const Film one = render_blurred(moving_sphere_scene({0.0f, 1.0f}), PathIntegrator(), 4, 1);
+    const Film two = render_blurred(moving_sphere_scene({0.0f, 1.0f}), PathIntegrator(), 4, 2);
     EXPECT_TRUE(same_pixels(one, two));
 }
 
@@ -158,10 +158,10 @@ TEST(MotionBlur, ShadowsFallWhereTheOccluderIsAtTheRaysTime) {
         return scene;
     };
     for (const bool path : {false, true}) {
-        const Film lit =
-            path ? render(scene_at(0.0f), PathIntegrator(1), 1) : render(scene_at(0.0f), WhittedIntegrator(), 1);
-        const Film shadowed =
-            path ? render(scene_at(1.0f), PathIntegrator(1), 1) : render(scene_at(1.0f), WhittedIntegrator(), 1);
+        const Film lit = path ? render_blurred(scene_at(0.0f), PathIntegrator(1), 1)
+                              : render_blurred(scene_at(0.0f), WhittedIntegrator(), 1);
+        const Film shadowed = path ? render_blurred(scene_at(1.0f), PathIntegrator(1), 1)
+                                   : render_blurred(scene_at(1.0f), WhittedIntegrator(), 1);
         EXPECT_GT(lit.at(24, 18).r, 0.1f) << (path ? "path" : "whitted");
         EXPECT_EQ(shadowed.at(24, 18).r, 0.0f) << (path ? "path" : "whitted");
     }
@@ -179,9 +179,9 @@ TEST(MotionBlur, AnObjectThatLightsTheSceneCannotMove) {
 
 TEST(MotionBlur, AMovingCameraBlursAStaticScene) {
     Scene scene = make_spheres_scene();
-    const Film still = render(make_spheres_scene(), WhittedIntegrator(), 2);
+    const Film still = render_blurred(make_spheres_scene(), WhittedIntegrator(), 2);
     scene.camera.set_motion({{0.0f, scene.camera.eye(), scene.camera.target()},
                              {1.0f, scene.camera.eye() + Vec3(3.0f, 0.0f, 0.0f), Vec3(3.0f, 2.0f, 0.0f)}});
     ASSERT_TRUE(scene.has_motion());
-    EXPECT_FALSE(same_pixels(still, render(std::move(scene), WhittedIntegrator(), 2)));
+    EXPECT_FALSE(same_pixels(still, render_blurred(std::move(scene), WhittedIntegrator(), 2)));
 }

@@ -42,7 +42,7 @@ MeshData square(bool mirrored_u) {
 /// The texel that encodes tangent-space normal `n` (unit): rgb = (n + 1)/2.
 Color encoded(const Vec3& n) { return {0.5f * (n.x + 1.0f), 0.5f * (n.y + 1.0f), 0.5f * (n.z + 1.0f)}; }
 
-void expect_near(const Vec3& got, const Vec3& want, float tolerance, const std::string& what) {
+void expect_direction_near(const Vec3& got, const Vec3& want, float tolerance, const std::string& what) {
     EXPECT_NEAR(got.x, want.x, tolerance) << what;
     EXPECT_NEAR(got.y, want.y, tolerance) << what;
     EXPECT_NEAR(got.z, want.z, tolerance) << what;
@@ -54,13 +54,13 @@ TEST(TangentSpace, TangentsFollowUAndTheSignMakesGreenPointUpInTheImage) {
     const std::vector<Tangent> plain = compute_tangents(square(false));
     ASSERT_EQ(plain.size(), 4u);
     for (const Tangent& t : plain) {
-        expect_near(t.direction, Vec3(1, 0, 0), 1e-6f, "tangent along +u = +x");
+        expect_direction_near(t.direction, Vec3(1, 0, 0), 1e-6f, "tangent along +u = +x");
         // b = sign·(n × t) = +y: the image's top.
         EXPECT_EQ(t.sign, 1.0f);
     }
     // Mirrored in u: the tangent turns to −x, and the sign keeps b = +y.
     for (const Tangent& t : compute_tangents(square(true))) {
-        expect_near(t.direction, Vec3(-1, 0, 0), 1e-6f, "mirrored tangent");
+        expect_direction_near(t.direction, Vec3(-1, 0, 0), 1e-6f, "mirrored tangent");
         EXPECT_EQ(t.sign, -1.0f);
     }
     MeshData no_uvs = square(false);
@@ -92,13 +92,13 @@ TEST(NormalMap, BendsTheNormalInTheTangentFrameWithGltfsScale) {
     for (float scale : {1.0f, 2.0f, 0.5f}) {
         m.normal_scale = scale;
         const Vec3 want = normalize(Vec3(stored.x * scale, stored.y * scale, stored.z));
-        expect_near(normal_mapped(m, si), want, 1e-5f, "from ∂p/∂u, scale " + std::to_string(scale));
+        expect_direction_near(normal_mapped(m, si), want, 1e-5f, "from ∂p/∂u, scale " + std::to_string(scale));
     }
     // A vertex tangent takes precedence; its sign −1 turns green downwards.
     m.normal_scale = 1.0f;
     si.tangent = Vec3(1, 0, 0);
     si.tangent_sign = -1.0f;
-    expect_near(normal_mapped(m, si), Vec3(stored.x, -stored.y, stored.z), 1e-5f, "vertex tangent, sign −1");
+    expect_direction_near(normal_mapped(m, si), Vec3(stored.x, -stored.y, stored.z), 1e-5f, "vertex tangent, sign −1");
 }
 
 TEST(NormalMap, NeverBendsBelowTheTrueSurface) {

@@ -16,7 +16,7 @@ namespace {
 
 using glint::Vec3;
 
-void expect_near(const Vec3& a, const Vec3& b, float tolerance, const char* what) {
+void expect_point_near(const Vec3& a, const Vec3& b, float tolerance, const char* what) {
     EXPECT_NEAR(a.x, b.x, tolerance) << what;
     EXPECT_NEAR(a.y, b.y, tolerance) << what;
     EXPECT_NEAR(a.z, b.z, tolerance) << what;
@@ -30,10 +30,10 @@ TEST(OrbitCamera, StartsWhereTheSceneCameraIs) {
     const float d = glint::length(Vec3(22, 22, 26));
     const glint::OrbitCamera orbit = glint::OrbitCamera::from(kSeminar, d);
     const glint::Camera c = orbit.camera();
-    expect_near(c.eye(), kSeminar.eye(), 1e-4f, "eye");
-    expect_near(c.forward(), kSeminar.forward(), 1e-6f, "forward");
-    expect_near(c.up(), kSeminar.up(), 1e-6f, "up");
-    expect_near(orbit.target(), Vec3(0, 2, 0), 1e-4f, "target");
+    expect_point_near(c.eye(), kSeminar.eye(), 1e-4f, "eye");
+    expect_point_near(c.forward(), kSeminar.forward(), 1e-6f, "forward");
+    expect_point_near(c.up(), kSeminar.up(), 1e-6f, "up");
+    expect_point_near(orbit.target(), Vec3(0, 2, 0), 1e-4f, "target");
 }
 
 TEST(OrbitCamera, OrbitingKeepsTheDistanceAndAFullTurnComesBack) {
@@ -43,9 +43,9 @@ TEST(OrbitCamera, OrbitingKeepsTheDistanceAndAFullTurnComesBack) {
     EXPECT_NEAR(glint::length(orbit.eye() - orbit.target()), 10.0f, 1e-4f);
     EXPECT_GT(glint::length(orbit.eye() - start), 1.0f);
     orbit.orbit(-0.7f, -0.2f);
-    expect_near(orbit.eye(), start, 1e-4f, "back");
+    expect_point_near(orbit.eye(), start, 1e-4f, "back");
     orbit.orbit(2.0f * glint::kPi, 0.0f);
-    expect_near(orbit.eye(), start, 1e-4f, "full turn");
+    expect_point_near(orbit.eye(), start, 1e-4f, "full turn");
 }
 
 TEST(OrbitCamera, PitchStopsShortOfTheZenith) {
@@ -60,8 +60,8 @@ TEST(OrbitCamera, PanMovesEyeAndTargetTogetherAndDollyScalesTheDistance) {
     glint::OrbitCamera orbit = glint::OrbitCamera::from(kSeminar, 10.0f);
     const Vec3 eye = orbit.eye(), target = orbit.target(), right = orbit.camera().right();
     orbit.pan(0.5f, 0.0f);
-    expect_near(orbit.target() - target, right * 5.0f, 1e-4f, "target moves right by half the distance");
-    expect_near(orbit.eye() - eye, right * 5.0f, 1e-4f, "eye moves with it");
+    expect_point_near(orbit.target() - target, right * 5.0f, 1e-4f, "target moves right by half the distance");
+    expect_point_near(orbit.eye() - eye, right * 5.0f, 1e-4f, "eye moves with it");
     orbit.dolly(0.5f);
     EXPECT_NEAR(orbit.distance(), 5.0f, 1e-5f);
 }
@@ -70,10 +70,10 @@ TEST(OrbitCamera, FrameFitsTheBoundingSphereInTheFieldOfView) {
     glint::OrbitCamera orbit = glint::OrbitCamera::from(kSeminar, 10.0f);
     const glint::Bounds3 box({-1, -2, -3}, {3, 2, 1});
     orbit.frame(box);
-    expect_near(orbit.target(), Vec3(1, 0, -1), 1e-5f, "centre");
+    expect_point_near(orbit.target(), Vec3(1, 0, -1), 1e-5f, "centre");
     const float radius = 0.5f * glint::length(box.diagonal());
     EXPECT_NEAR(orbit.distance() * std::sin(26.0f * glint::kPi / 180.0f), radius, 1e-4f);
-    expect_near(orbit.camera().forward(), kSeminar.forward(), 1e-5f, "direction kept");
+    expect_point_near(orbit.camera().forward(), kSeminar.forward(), 1e-5f, "direction kept");
 }
 
 TEST(OrbitCamera, AZUpCameraOrbitsAboutZ) {
@@ -101,8 +101,8 @@ material = "grey"
 )");
     const glint::SceneFile file = glint::load_scene_file(dir / "view.toml");
     const glint::Camera& back = file.loaded.scene.camera;
-    expect_near(back.eye(), orbit.eye(), 1e-4f, "eye");
-    expect_near(back.forward(), orbit.camera().forward(), 1e-5f, "forward");
+    expect_point_near(back.eye(), orbit.eye(), 1e-4f, "eye");
+    expect_point_near(back.forward(), orbit.camera().forward(), 1e-5f, "forward");
     EXPECT_EQ(back.vertical_fov(), 52.0f);
     std::filesystem::remove_all(dir);
 }

@@ -11,6 +11,7 @@
 #include "glint/scene/render_scene.h"
 #include "glint/scene/scene.h"
 
+#include "source_paths.h"
 #include "test_rays.h"
 
 #include <gtest/gtest.h>
@@ -23,9 +24,6 @@
 
 namespace glint {
 namespace {
-
-const std::filesystem::path kMeshDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
-const std::filesystem::path kTestDataDir = std::filesystem::path(GLINT_SOURCE_DIR) / "tests" / "data";
 
 using glint_test::random_rays;
 
@@ -152,15 +150,15 @@ TEST_P(PacketMesh, PartlyFilledPacketsLeaveTheOtherLanesAlone) {
     for (const uint32_t lanes : {0x01u, 0x80u, 0x5au, 0x7eu}) expect_packets_agree(mesh_->bvh(), rays, lanes);
 }
 
-INSTANTIATE_TEST_SUITE_P(InTree, PacketMesh, testing::Values((kTestDataDir / "icosphere.ply").string()));
+INSTANTIATE_TEST_SUITE_P(InTree, PacketMesh, testing::Values((glint_test::kTestDataDir / "icosphere.ply").string()));
 INSTANTIATE_TEST_SUITE_P(Stanford, PacketMesh,
-                         testing::Values((kMeshDir / "stanford_bunny.ply").string(),
-                                         (kMeshDir / "stanford_lucy_100k.ply").string()));
+                         testing::Values((glint_test::kSharedMeshDir / "stanford_bunny.ply").string(),
+                                         (glint_test::kSharedMeshDir / "stanford_lucy_100k.ply").string()));
 
 TEST(PacketWatertight, PacketsThroughEdgesAndVerticesOfAClosedMeshNeverEscape) {
     // The in-tree icosphere is closed; rays from inside through its vertices and points on
     // its edges, eight of them (in all directions) to a packet, must all hit.
-    TriangleMesh mesh(load_mesh_data(kTestDataDir / "icosphere.ply"));
+    TriangleMesh mesh(load_mesh_data(glint_test::kTestDataDir / "icosphere.ply"));
     mesh.prepare();
     const std::vector<Vec3> targets = glint_test::vertices_and_edge_points(mesh.data());
     int escaped = 0, traced = 0;
@@ -192,7 +190,7 @@ TEST(PacketDegenerate, AnEmptyBvhHitsNothing) {
 /// sphere, and a glass copy (which shadow rays pass under DielectricShadows::None); with
 /// `moving`, one placement moves during the shutter.
 RenderScene placed_scene(int copies, bool moving) {
-    auto mesh = std::make_shared<TriangleMesh>(load_mesh_data(kTestDataDir / "icosphere.ply"));
+    auto mesh = std::make_shared<TriangleMesh>(load_mesh_data(glint_test::kTestDataDir / "icosphere.ply"));
     Scene scene;
     const uint32_t matte = scene.add_material(Material{});
     Material glass;

@@ -36,8 +36,8 @@ ImageStats red_channel_stats(const Film& film) {
     return {mean, std::sqrt(std::max(0.0, sum2 / count - mean * mean) / count)};
 }
 
-Film render(const RenderScene& scene, const Integrator& integrator, uint32_t size, uint32_t samples_per_axis,
-            uint64_t seed = 0, uint32_t threads = 0) {
+Film render_path(const RenderScene& scene, const Integrator& integrator, uint32_t size, uint32_t samples_per_axis,
+                 uint64_t seed = 0, uint32_t threads = 0) {
     RenderSettings settings;
     settings.width = settings.height = size;
     settings.samples_per_axis = samples_per_axis;
@@ -69,7 +69,7 @@ TEST(PathFurnace, ClosedEmissiveSphereAveragesOne) {
     for (const bool nee : {true, false}) {
         for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance}) {
             const RenderScene scene = closed_furnace(nee);
-            const Film film = render(scene, PathIntegrator(64, h), 16, 4);
+            const Film film = render_path(scene, PathIntegrator(64, h), 16, 4);
             const ImageStats s = red_channel_stats(film);
             EXPECT_NEAR(s.mean, 1.0, 4.0 * s.stderr_ + 1e-4)
                 << (nee ? "with" : "without") << " light sampling, " << (h == MisHeuristic::Power ? "power" : "balance");
@@ -86,7 +86,7 @@ TEST(PathFurnace, WhiteDiffuseSphereVanishesUnderAUniformWhiteSky) {
     scene.background = Background::constant(Color(1.0f));
     scene.camera = Camera::perspective(Vec3(0, 0, 4), Vec3(0, 0, 0), Vec3(0, 1, 0), 40.0f);
     const RenderScene prepared(std::move(scene));
-    const Film film = render(prepared, PathIntegrator(8), 12, 2);
+    const Film film = render_path(prepared, PathIntegrator(8), 12, 2);
     for (uint32_t y = 0; y < 12; ++y)
         for (uint32_t x = 0; x < 12; ++x) EXPECT_NEAR(film.at(x, y).r, 1.0f, 1e-4f) << x << "," << y;
 }
@@ -133,8 +133,8 @@ TEST(PathVersusWhitted, AgreeOnAPurelySpecularScene) {
     constexpr double kT = 6.5;
     std::vector<Film> runs, whitted_runs;
     for (int i = 0; i < kRuns; ++i) {
-        runs.push_back(render(scene, PathIntegrator(8), kSize, 4, uint64_t(i)));
-        whitted_runs.push_back(render(scene, WhittedIntegrator(8), kSize, 4, uint64_t(i)));
+        runs.push_back(render_path(scene, PathIntegrator(8), kSize, 4, uint64_t(i)));
+        whitted_runs.push_back(render_path(scene, WhittedIntegrator(8), kSize, 4, uint64_t(i)));
     }
     auto whitted_at = [&](uint32_t x, uint32_t y, int c) {
         double sum = 0.0;
@@ -172,9 +172,9 @@ TEST(PathVersusWhitted, BothAreIdenticalForAnyThreadCountWithAreaLights) {
         settings.integrator = name;
         settings.light_samples = 4;
         const auto integrator = make_integrator(settings);
-        const Film one = render(prepared, *integrator, 20, 2, 5, 1);
-        const Film two = render(prepared, *integrator, 20, 2, 5, 2);
-        const Film other_seed = render(prepared, *integrator, 20, 2, 6, 2);
+        const Film one = render_path(prepared, *integrator, 20, 2, 5, 1);
+        const Film two = render_path(prepared, *integrator, 20, 2, 5, 2);
+        const Film other_seed = render_path(prepared, *integrator, 20, 2, 6, 2);
         bool identical = true, differs = false;
         for (uint32_t y = 0; y < 20; ++y)
             for (uint32_t x = 0; x < 20; ++x) {

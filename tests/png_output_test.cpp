@@ -115,14 +115,15 @@ Image test_image(int width, int height, int channels) {
     return image;
 }
 
+}  // namespace
+
+// Not in the anonymous namespace: the test classes TEST_F derives from it are external.
 class PngOutputTest : public ::testing::Test {
 protected:
     void SetUp() override { dir_ = glint_test::temp_dir(); }
     void TearDown() override { fs::remove_all(dir_); }
     fs::path dir_;
 };
-
-}  // namespace
 
 TEST_F(PngOutputTest, RowsComeBackAsTheLevelsWritten) {
     // 700×300 RGB: rows of 2,101 filtered bytes, five stripes. 1×70000 grey: 3 stripes of

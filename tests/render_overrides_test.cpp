@@ -14,7 +14,7 @@ namespace glint {
 namespace {
 
 /// The message apply_overrides gives for `set`, or a test failure if it accepts it.
-std::string refusal(const std::function<void(RenderOverrides&)>& set, OptionSpelling spelling) {
+std::string override_refusal(const std::function<void(RenderOverrides&)>& set, OptionSpelling spelling) {
     RenderOverrides overrides;
     set(overrides);
     RenderSettings settings;
@@ -29,22 +29,22 @@ std::string refusal(const std::function<void(RenderOverrides&)>& set, OptionSpel
 
 TEST(RenderOverrides, NamesTheSettingAsTheCallerSpellsIt) {
     const auto samples = [](RenderOverrides& o) { o.light_samples = 0; };
-    EXPECT_EQ(refusal(samples, OptionSpelling::CommandLine).rfind("--light-samples: expected", 0), 0u);
-    EXPECT_EQ(refusal(samples, OptionSpelling::Keyword).rfind("light_samples: expected", 0), 0u);
+    EXPECT_EQ(override_refusal(samples, OptionSpelling::CommandLine).rfind("--light-samples: expected", 0), 0u);
+    EXPECT_EQ(override_refusal(samples, OptionSpelling::Keyword).rfind("light_samples: expected", 0), 0u);
     EXPECT_EQ(option_name("filter-radius", OptionSpelling::Keyword), "filter_radius");
     EXPECT_EQ(option_name("filter-radius", OptionSpelling::CommandLine), "--filter-radius");
 }
 
 TEST(RenderOverrides, UnknownNamesAreRefusedWithTheChoices) {
     const OptionSpelling kw = OptionSpelling::Keyword;
-    EXPECT_EQ(refusal([](RenderOverrides& o) { o.integrator = "photon"; }, kw),
+    EXPECT_EQ(override_refusal([](RenderOverrides& o) { o.integrator = "photon"; }, kw),
               "integrator: expected one of whitted, path; got 'photon'");
-    const std::string filter = refusal([](RenderOverrides& o) { o.filter = "boxy"; }, kw);
+    const std::string filter = override_refusal([](RenderOverrides& o) { o.filter = "boxy"; }, kw);
     EXPECT_EQ(filter.rfind("filter: expected one of box", 0), 0u) << filter;
     EXPECT_NE(filter.find("got 'boxy'"), std::string::npos) << filter;
-    EXPECT_EQ(refusal([](RenderOverrides& o) { o.mis = "maximum"; }, kw),
+    EXPECT_EQ(override_refusal([](RenderOverrides& o) { o.mis = "maximum"; }, kw),
               "mis: expected one of balance, power; got 'maximum'");
-    EXPECT_EQ(refusal([](RenderOverrides& o) { o.aov = "albedo,glow"; }, kw).rfind("aov: expected", 0), 0u);
+    EXPECT_EQ(override_refusal([](RenderOverrides& o) { o.aov = "albedo,glow"; }, kw).rfind("aov: expected", 0), 0u);
 }
 
 TEST(RenderOverrides, GoodValuesLandInTheSettings) {

@@ -20,6 +20,7 @@
 #include "glint/scene/render_scene.h"
 
 #include "example_scenes.h"
+#include "source_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -35,7 +36,6 @@
 namespace glint {
 namespace {
 
-const std::filesystem::path kSource(GLINT_SOURCE_DIR);
 constexpr uint32_t kWidth = 64, kHeight = 48;
 
 /// Per channel, |a - b| relative to the reference where it is brighter than 1 (HDR skies
@@ -104,9 +104,9 @@ class SceneReference : public testing::TestWithParam<std::string> {};
 
 TEST_P(SceneReference, MatchesReference) {
     const std::string name = GetParam();
-    LoadedScene loaded = load_toml_scene(kSource / "scenes" / (name + ".toml"));
+    LoadedScene loaded = load_toml_scene(glint_test::kSourceDir / "scenes" / (name + ".toml"));
     const Image image = render(loaded);
-    const std::filesystem::path reference_path = kSource / "tests" / "references" / (name + ".exr");
+    const std::filesystem::path reference_path = glint_test::kSourceDir / "tests" / "references" / (name + ".exr");
     if (updating_references()) {
         write_image(reference_path, image);
         GTEST_SKIP() << "GLINT_UPDATE_REFERENCES=1: wrote " << reference_path;
@@ -122,30 +122,31 @@ TEST_P(SceneReference, MatchesReference) {
     EXPECT_TRUE(matches(d)) << name << ": " << d;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, SceneReference, testing::ValuesIn(glint_test::example_scene_names(kSource)),
+INSTANTIATE_TEST_SUITE_P(Scenes, SceneReference,
+                         testing::ValuesIn(glint_test::example_scene_names(glint_test::kSourceDir)),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 TEST(ReferenceComparison, DetectsAChangedScene) {
     // The check must be able to fail: the spheres scene without its mirror reflections
     // (max depth 0), or with its red material 0.01 redder, must not pass as the reference.
-    const Image reference = read_image(kSource / "tests" / "references" / "spheres.exr");
-    LoadedScene flat = load_toml_scene(kSource / "scenes" / "spheres.toml");
+    const Image reference = read_image(glint_test::kSourceDir / "tests" / "references" / "spheres.exr");
+    LoadedScene flat = load_toml_scene(glint_test::kSourceDir / "scenes" / "spheres.toml");
     flat.settings.max_depth = 0;
     const ImageDifference flat_difference = compare(render(flat), reference);
     EXPECT_FALSE(matches(flat_difference)) << flat_difference;
 
-    std::ifstream in(kSource / "scenes" / "spheres.toml");
+    std::ifstream in(glint_test::kSourceDir / "scenes" / "spheres.toml");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string red = "diffuse = [0.63, 0.105, 0.07]";
     ASSERT_NE(text.find(red), std::string::npos);
     text.replace(text.find(red), red.size(), "diffuse = [0.64, 0.105, 0.07]");
-    LoadedScene redder = load_toml_scene_string(text, "spheres.toml", kSource / "scenes");
+    LoadedScene redder = load_toml_scene_string(text, "spheres.toml", glint_test::kSourceDir / "scenes");
     const ImageDifference redder_difference = compare(render(redder), reference);
     EXPECT_FALSE(matches(redder_difference)) << redder_difference;
 }
 
 TEST(ReferenceComparison, SpheresFileRendersLikeTheBuiltInScene) {
-    LoadedScene file = load_toml_scene(kSource / "scenes" / "spheres.toml");
+    LoadedScene file = load_toml_scene(glint_test::kSourceDir / "scenes" / "spheres.toml");
     LoadedScene built_in;
     built_in.scene = make_spheres_scene();
     built_in.settings = file.settings;

@@ -9,6 +9,7 @@
 #include "glint/scene_format/did_you_mean.h"
 #include "glint/scene_format/source_excerpt.h"
 #include "glint/scene_format/toml_scene_loader.h"
+#include "source_paths.h"
 #include "toml_text.h"
 
 #include <gtest/gtest.h>
@@ -285,11 +286,11 @@ TEST(TomlSceneErrors, SectionOfTheWrongKind) {
     expect_error("[objects]\ntype = \"sphere\"\n", "test.toml:1:1:", {"objects is a table", "[[objects]]"});
 }
 
-TEST(TomlSceneErrors, DirectoryIsNotAScene) { EXPECT_THROW((void)load_toml_scene(kScenes), SceneError); }
+TEST(TomlSceneErrors, DirectoryIsNotAScene) { EXPECT_THROW((void)load_toml_scene(glint_test::kScenesDir), SceneError); }
 
 TEST(TomlSceneErrors, MissingSceneFileNamesIt) {
     try {
-        (void)load_toml_scene(kScenes / "no_such_scene.toml");
+        (void)load_toml_scene(glint_test::kScenesDir / "no_such_scene.toml");
         FAIL() << "expected a SceneError";
     } catch (const SceneError& e) {
         EXPECT_NE(std::string(e.what()).find("no_such_scene.toml"), std::string::npos) << e.what();
@@ -311,7 +312,7 @@ TEST(TomlScene, WarnsAboutAnUnlitScene) {
         load(std::string(kRed) + "[[objects]]\ntype = \"sphere\"\nradius = 1\nmaterial = \"red\"\n");
     ASSERT_EQ(unlit.warnings.size(), 1u);
     EXPECT_NE(unlit.warnings[0].find("no [[lights]]"), std::string::npos) << unlit.warnings[0];
-    EXPECT_TRUE(load_toml_scene(kScenes / "cornell.toml").warnings.empty());
+    EXPECT_TRUE(load_toml_scene(glint_test::kScenesDir / "cornell.toml").warnings.empty());
 }
 
 TEST(TomlScene, RenderSettings) {
@@ -654,7 +655,8 @@ TEST(TomlScene, HeightfieldAddsGridHeightsAndWaves) {
 
 TEST(TomlScene, SpheresFileMatchesTheBuiltInScene) {
     for (const bool refraction : {false, true}) {
-        const LoadedScene file = load_toml_scene(kScenes / (refraction ? "spheres_refraction.toml" : "spheres.toml"));
+        const LoadedScene file =
+            load_toml_scene(glint_test::kScenesDir / (refraction ? "spheres_refraction.toml" : "spheres.toml"));
         const Scene built_in = make_spheres_scene(refraction);
         ASSERT_EQ(file.scene.objects().size(), built_in.objects().size());
         ASSERT_EQ(file.scene.materials().size(), built_in.materials().size());

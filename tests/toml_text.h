@@ -2,6 +2,7 @@
 // Loading scene text in tests, and checking the SceneError a mistake gives.
 
 #include "glint/scene_format/toml_scene_loader.h"
+#include "source_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +14,7 @@
 namespace glint {
 namespace {
 
-const std::filesystem::path kScenes = std::filesystem::path(GLINT_SOURCE_DIR) / "scenes";
-
-LoadedScene load(std::string_view text) { return load_toml_scene_string(text, "test.toml", kScenes); }
+LoadedScene load(std::string_view text) { return load_toml_scene_string(text, "test.toml", glint_test::kScenesDir); }
 
 /// The SceneError message for `text`, or a test failure if it loads.
 std::string error_of(std::string_view text) {

@@ -24,7 +24,7 @@ const char* const kColouredPly =
 
 const char* const kColouredObj = "v 0 0 0 1 0 0\nv 1 0 0 0.5019608 0.5019608 0.5019608\nv 0 1 0 0 0 1\nf 1 2 3\n";
 
-const TriangleMesh& only_mesh(const Scene& scene) {
+const TriangleMesh& coloured_mesh(const Scene& scene) {
     const auto* mesh = dynamic_cast<const TriangleMesh*>(scene.objects().at(0).shape.get());
     EXPECT_NE(mesh, nullptr);
     return *mesh;
@@ -50,6 +50,6 @@ TEST(VertexColors, PlyAndObjColoursArriveLinear) {
     glint_test::write_file(dir / "tri.obj", kColouredObj);
     for (const char* name : {"tri.ply", "tri.obj"}) {
         const SceneFile file = load_scene_file(dir / name);
-        expect_corner_colours(only_mesh(file.loaded.scene).data(), name);
+        expect_corner_colours(coloured_mesh(file.loaded.scene).data(), name);
     }
 }
