@@ -212,7 +212,9 @@ TEST(RadiancePicture, BrokenPicturesSayWhatIsWrong) {
         {"#?RADIANCE\n\n-Y 2 +X 4 junk\n", "the resolution line is '-Y 2 +X 4 junk'"},
         {"#?RADIANCE\n\nsize 4 4\n", "the resolution line is 'size 4 4'"},
         {"#?RADIANCE\n\n-Y 2 +X 2\n12345678", "the pixels end early: 8 bytes cannot hold 2×2 pixels"},
-        {flat_picture(5, 3).substr(0, header(5, 3).size() + 4 * 14), "the pixels end early"},
+        // Too narrow to be coded: the bytes must hold every pixel flat, 4 bytes each.
+        {flat_picture(5, 3).substr(0, header(5, 3).size() + 4 * 14),
+         "the pixels end early: 56 bytes cannot hold 5×3 pixels"},
         {good.substr(0, good.size() - 3), "the pixels end early: scanline 4 is cut off"},
         {wrong_width, "scanline 1 says it is 63 pixels wide; expected 64"},
         {zero_count, "scanline 1 has a run of 0 bytes"},

@@ -86,6 +86,18 @@ Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
     return image;
 }
 
+/// The Radiance picture in `bytes` as Glint reads it (radiance_picture.h): linear floats,
+/// whichever encoding integer files would be read with. Nothing when the bytes are another
+/// format or a picture left to OpenImageIO; an ImageError naming `name` when it is broken.
+std::optional<Image> native_radiance_picture(const unsigned char* bytes, std::size_t size, const std::string& name) {
+    if (!codec::is_radiance_picture(bytes, size)) return std::nullopt;
+    Image image;
+    const std::optional<std::string> error = codec::read_radiance_picture(bytes, size, check_size, image);
+    if (!error) return std::nullopt;
+    if (!error->empty()) throw ImageError(name + ": " + *error);
+    return image;
+}
+
 }  // namespace
 
 Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
@@ -99,17 +111,16 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
             return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
         },
         path.string());
+    // A Radiance picture is read whole, from the stream already open, by Glint itself.
     unsigned char magic[2] = {};
     file.clear();
     if (file.seekg(0).read(reinterpret_cast<char*>(magic), 2) && codec::is_radiance_picture(magic, 2)) {
-        const std::optional<std::string> bytes = read_whole_file(path);
-        if (!bytes) throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
-        Image image;  // linear floats, whichever encoding integer files would be read with
-        if (std::optional<std::string> error = codec::read_radiance_picture(
-                reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), check_size, image)) {
-            if (!error->empty()) throw ImageError(path.string() + ": " + *error);
-            return image;
-        }
+        std::string bytes(size, '\0');
+        if (!file.seekg(0).read(bytes.data(), std::streamsize(size)))
+            throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
+        if (std::optional<Image> image =
+                native_radiance_picture(reinterpret_cast<const unsigned char*>(bytes.data()), size, path.string()))
+            return std::move(*image);
     }
     codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_file(path.string(), check_size, decoded); !error.empty())
@@ -127,14 +138,8 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
             return true;
         },
         name);
-    if (codec::is_radiance_picture(bytes.data(), bytes.size())) {
-        Image image;
-        if (std::optional<std::string> error =
-                codec::read_radiance_picture(bytes.data(), bytes.size(), check_size, image)) {
-            if (!error->empty()) throw ImageError(name + ": " + *error);
-            return image;
-        }
-    }
+    if (std::optional<Image> image = native_radiance_picture(bytes.data(), bytes.size(), name))
+        return std::move(*image);
     codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
         !error.empty())

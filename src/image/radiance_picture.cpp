@@ -98,17 +98,20 @@ std::string read_coded_scanline(ByteReader& in, int width, int y, unsigned char*
     return "";
 }
 
+/// Whether scanlines `width` pixels wide may be run-length coded: the coding is defined for
+/// 8 to 32767 pixels.
+bool may_be_coded(int width) { return width >= 8 && width <= 0x7fff; }
+
 std::string read_pixels(ByteReader& in, int width, int height, float* pixels) {
-    // Run-length coding is defined for scanlines of 8 to 32767 pixels, and each scanline says
-    // whether it is coded: a coded one starts with 2, 2 and its width below 32768, which no
-    // flat pixel does (a stored pixel's largest mantissa is at least 128), as Radiance's own
-    // reader tells them apart.
-    const bool may_be_coded = width >= 8 && width <= 0x7fff;
+    // Each scanline says whether it is coded: a coded one starts with 2, 2 and its width
+    // below 32768, which no flat pixel does (a stored pixel's largest mantissa is at least
+    // 128), as Radiance's own reader tells them apart.
+    const bool codable = may_be_coded(width);
     const auto w = std::size_t(width);
-    std::vector<unsigned char> planes(may_be_coded ? 4 * w : 0);
+    std::vector<unsigned char> planes(codable ? 4 * w : 0);
     for (int y = 0; y < height; ++y) {
         float* out = pixels + std::size_t(y) * w * 3;
-        if (!may_be_coded || in.left() < 4 || in.at[0] != 2 || in.at[1] != 2 || (in.at[2] & 0x80) != 0) {
+        if (!codable || in.left() < 4 || in.at[0] != 2 || in.at[1] != 2 || (in.at[2] & 0x80) != 0) {
             if (std::string error = read_flat_scanline(in, width, y, out); !error.empty()) return error;
             continue;
         }
@@ -160,10 +163,11 @@ std::optional<std::string> read_radiance_picture(const unsigned char* bytes, std
     if (!width || !text.empty())
         return "the resolution line is '" + std::string(*resolution) + "'; expected -Y height +X width";
     if (std::string refused = check(*width, *height, 3); !refused.empty()) return refused;
-    // A coded scanline takes at least 4 bytes of mark and 2 for each 127 bytes of a channel:
-    // a picture whose bytes cannot hold it is refused before its pixels are allocated.
-    const auto per_scanline =
-        std::min<std::size_t>(4 * std::size_t(*width), 4 + 8 * ((std::size_t(*width) + 126) / 127));
+    // A flat scanline takes 4 bytes a pixel; a coded one at least 4 bytes of mark and 2 for
+    // each 127 bytes of a channel: a picture whose bytes cannot hold the smaller of the two
+    // is refused before its pixels are allocated.
+    const auto flat = 4 * std::size_t(*width);
+    const auto per_scanline = may_be_coded(*width) ? std::min(flat, 4 + 8 * ((std::size_t(*width) + 126) / 127)) : flat;
     if (in.left() / per_scanline < std::size_t(*height))
         return "the pixels end early: " + std::to_string(in.left()) + " bytes cannot hold " + std::to_string(*width) +
                "×" + std::to_string(*height) + " pixels";

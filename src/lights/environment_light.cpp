@@ -43,14 +43,15 @@ LargeArray<float> pixel_weights(const Image& image, BackgroundKind kind) {
     const bool wrap_x = kind == BackgroundKind::Equirectangular;
     auto column = [&](int x) { return wrap_x ? (x + w) % w : std::clamp(x, 0, w - 1); };
     const auto at = [w](int x, int y) { return std::size_t(y) * std::size_t(w) + std::size_t(x); };
-    LargeArray<float> luminance(std::size_t(w) * std::size_t(h)), across(luminance.size()), weights(luminance.size());
+    // The horizontal pass reads its row's luminance from a row of its own; the vertical
+    // pass needs the rows above and below, so the horizontal result is kept whole.
+    LargeArray<float> across(std::size_t(w) * std::size_t(h)), weights(across.size());
     tbb::parallel_for(0, h, [&](int y) {
-        for (int x = 0; x < w; ++x) luminance[at(x, y)] = pixel_luminance(image, x, y);
-    });
-    tbb::parallel_for(0, h, [&](int y) {
+        std::vector<float> luminance(static_cast<std::size_t>(w));
+        for (int x = 0; x < w; ++x) luminance[std::size_t(x)] = pixel_luminance(image, x, y);
         for (int x = 0; x < w; ++x)
-            across[at(x, y)] = 0.75f * luminance[at(x, y)] +
-                               0.125f * (luminance[at(column(x - 1), y)] + luminance[at(column(x + 1), y)]);
+            across[at(x, y)] = 0.75f * luminance[std::size_t(x)] +
+                               0.125f * (luminance[std::size_t(column(x - 1))] + luminance[std::size_t(column(x + 1))]);
     });
     tbb::parallel_for(0, h, [&](int y) {
         const int above = std::max(y - 1, 0), below = std::min(y + 1, h - 1);
