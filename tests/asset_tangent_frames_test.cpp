@@ -11,6 +11,8 @@
 #include "glint/math/color.h"
 #include "glint/scene/render_scene.h"
 
+#include "source_paths.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -66,7 +68,7 @@ TEST(AssetTangentFrames, AGltfTangentAttributeIsUsedWithItsHandedness) {
 TEST(AssetTangentFrames, TheAvocadosOwnTangentsAgreeWithTheComputedOnes) {
     // Khronos' Avocado was exported with MikkTSpace tangents; Glint's own (computed when a
     // file has none) must agree: the same handedness everywhere, directions within a degree.
-    const std::filesystem::path path = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "gltf/Avocado/glTF/Avocado.gltf";
+    const std::filesystem::path path = glint_test::kSharedDataDir / "gltf/Avocado/glTF/Avocado.gltf";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "no shared data at " << path;
     const glint::GltfScene file = glint::load_gltf_scene(path);
     glint::MeshData data = only_mesh(file.loaded.scene).data();

@@ -51,7 +51,7 @@ int differing_pixels(const Image& a, const Image& b) {
 class CameraPackets : public testing::TestWithParam<std::string> {};
 
 TEST_P(CameraPackets, RenderTheImageOfSingleRays) {
-    LoadedScene loaded = load_toml_scene(glint_test::kSourceDir / "scenes" / (GetParam() + ".toml"));
+    LoadedScene loaded = load_toml_scene(glint_test::kScenesDir / (GetParam() + ".toml"));
     loaded.settings.width = kPacketsWidth;
     loaded.settings.height = kPacketsHeight;
     const RenderScene scene(std::move(loaded.scene));

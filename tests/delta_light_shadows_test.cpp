@@ -24,7 +24,7 @@ Ray whitted_shadow_ray(const SurfaceInteraction& si, const LightSample& ls) {
 
 TEST(DeltaLightShadows, AnswerAsRenderSceneOccludedForEachLaneAndLight) {
     // Two point lights over a floor with a grid of spheres casting shadows on it.
-    const RenderScene scene(load_toml_scene(glint_test::kSourceDir / "scenes" / "spheres.toml").scene);
+    const RenderScene scene(load_toml_scene(glint_test::kScenesDir / "spheres.toml").scene);
     const std::vector<const Light*>& lights = scene.all_lights();
     ASSERT_GE(std::count_if(lights.begin(), lights.end(), [](const Light* l) { return l->is_delta(); }), 2);
     int blocked = 0, lit = 0;
@@ -72,7 +72,7 @@ TEST(DeltaLightShadows, AnswerAsRenderSceneOccludedForEachLaneAndLight) {
 TEST(DeltaLightShadows, LeaveLightFromUnderTheSurfaceToDirectLight) {
     // Seen from below, the floor's lights are on the other side: direct light casts those
     // shadow rays from under the surface with opaque dielectrics, so none is traced here.
-    const RenderScene scene(load_toml_scene(glint_test::kSourceDir / "scenes" / "spheres.toml").scene);
+    const RenderScene scene(load_toml_scene(glint_test::kScenesDir / "spheres.toml").scene);
     Ray ray(Vec3(-5.5f, -10.0f, -5.5f), Vec3(0, 1, 0));
     Hit hit;
     ASSERT_TRUE(scene.intersect(ray, hit));
@@ -93,10 +93,9 @@ TEST(DeltaLightShadows, LeaveLightFromUnderTheSurfaceToDirectLight) {
 TEST(DeltaLightShadows, AreTracedWherePacketsPay) {
     // Spheres and quads take packets lane by lane: the render traces their shadow rays one by
     // one. A mesh traces them together.
-    EXPECT_FALSE(RenderScene(load_toml_scene(glint_test::kSourceDir / "scenes" / "spheres.toml").scene).packets_pay());
-    EXPECT_FALSE(RenderScene(load_toml_scene(glint_test::kSourceDir / "scenes" / "cornell.toml").scene).packets_pay());
-    EXPECT_TRUE(
-        RenderScene(load_toml_scene(glint_test::kSourceDir / "scenes" / "bunny_glass.toml").scene).packets_pay());
+    EXPECT_FALSE(RenderScene(load_toml_scene(glint_test::kScenesDir / "spheres.toml").scene).packets_pay());
+    EXPECT_FALSE(RenderScene(load_toml_scene(glint_test::kScenesDir / "cornell.toml").scene).packets_pay());
+    EXPECT_TRUE(RenderScene(load_toml_scene(glint_test::kScenesDir / "bunny_glass.toml").scene).packets_pay());
 }
 
 }  // namespace

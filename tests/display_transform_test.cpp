@@ -6,6 +6,8 @@
 #include "glint/scene_file.h"
 #include "glint/scene_format/toml_scene_loader.h"
 
+#include "source_paths.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -169,7 +171,7 @@ TEST(DisplayTransform, ATomlSceneChoosesItsOwn) {
 }
 
 TEST(DisplayTransform, GltfScenesAreToneMappedWithPbrNeutral) {
-    const fs::path file = fs::path(GLINT_SOURCE_DIR) / "tests/data/animated_quads.gltf";
+    const fs::path file = glint_test::kTestDataDir / "animated_quads.gltf";
     const SceneFile scene = load_scene_file(file);
     EXPECT_EQ(scene.loaded.display, (DisplayTransform{ToneCurve::PbrNeutral, Exposure{}}));
 }

@@ -6,6 +6,8 @@
 #include "glint/scene/environment.h"
 #include "glint/scene/background.h"
 
+#include "source_paths.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -142,7 +144,7 @@ TEST(EnvironmentKind, ShapeMustFitANamedLayout) {
     EXPECT_TRUE(glint::environment_shape_problem(glint::BackgroundKind::SphereMap, 64, 32));
 }
 
-const std::filesystem::path kEnvDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "env";
+const std::filesystem::path kEnvDir = glint_test::kSharedDataDir / "env";
 
 TEST(EnvironmentFiles, LoadGuessLayoutAndAgree) {
     const auto equirect = kEnvDir / "equirect/venice_sunset_1k.hdr";

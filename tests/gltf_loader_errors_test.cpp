@@ -9,6 +9,8 @@
 #include "glint/assets/mesh_loader.h"
 #include "glint/diagnostics.h"
 
+#include "source_paths.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,7 +57,7 @@ TEST(GltfErrors, TruncatedGlbNamesTheFile) {
 }
 
 TEST(GltfErrors, TruncatedSampleGlbFailsCleanlyInTheCli) {
-    const fs::path duck = fs::path(GLINT_SHARED_DATA_DIR) / "gltf/Duck/glTF-Binary/Duck.glb";
+    const fs::path duck = glint_test::kSharedDataDir / "gltf/Duck/glTF-Binary/Duck.glb";
     if (!fs::exists(duck)) GTEST_SKIP() << "no shared data at " << duck;
     const fs::path dir = glint_test::temp_dir();
     const std::string bytes = glint_test::read_file(duck);

@@ -9,6 +9,8 @@
 #include "glint/math/constants.h"
 #include "glint/scene/render_scene.h"
 
+#include "source_paths.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -26,7 +28,7 @@ using nlohmann::json;
 
 namespace {
 
-fs::path gltf_dir() { return fs::path(GLINT_SHARED_DATA_DIR) / "gltf"; }
+fs::path gltf_dir() { return glint_test::kSharedDataDir / "gltf"; }
 
 std::vector<fs::path> sample_files() {
     std::vector<fs::path> files;

@@ -6,6 +6,8 @@
 #include "glint/scene_file.h"
 #include "glint/scene/render_scene.h"
 
+#include "source_paths.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,7 +15,7 @@
 namespace {
 
 TEST(MeshScenes, StanfordMeshesRenderFinite) {
-    const std::filesystem::path dir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
+    const std::filesystem::path dir = glint_test::kSharedMeshDir;
     if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes at " << dir;
     for (const char* name : {"stanford_bunny.ply", "stanford_lucy_100k.ply", "stanford_dragon_res2.ply", "stanford_dragon.ply"}) {
         glint::LoadedScene loaded = glint::load_scene_file(dir / name).loaded;

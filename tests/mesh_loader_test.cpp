@@ -7,6 +7,8 @@
 #include "glint/scene_file.h"
 #include "glint/scene/render_scene.h"
 
+#include "source_paths.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -16,8 +18,6 @@
 namespace fs = std::filesystem;
 
 namespace {
-
-const fs::path kMeshes = fs::path(GLINT_SHARED_DATA_DIR) / "meshes";
 
 std::string ascii_ply(const std::vector<std::string>& vertices, const std::vector<std::string>& faces) {
     std::string s = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(vertices.size()) +
@@ -35,7 +35,7 @@ TEST(MeshLoader, StanfordMeshesKeepTheirCounts) {
         {"stanford_dragon_res2.ply", 202520, 100250},
     };
     for (const auto& m : meshes) {
-        const fs::path path = kMeshes / m.file;
+        const fs::path path = glint_test::kSharedMeshDir / m.file;
         if (!fs::exists(path)) GTEST_SKIP() << "no shared mesh " << path;
         const glint::MeshData data = glint::load_mesh_data(path);
         EXPECT_EQ(data.indices.size() / 3, m.triangles) << m.file;
@@ -46,7 +46,7 @@ TEST(MeshLoader, StanfordMeshesKeepTheirCounts) {
 // The load time is printed for the record, not asserted: benchmarks are reported, never
 // timed assertions (a loaded CI machine must not fail a correct loader).
 TEST(MeshLoader, DragonTwiceAsInstancesSharesOneMesh) {
-    const fs::path path = kMeshes / "stanford_dragon.ply";
+    const fs::path path = glint_test::kSharedMeshDir / "stanford_dragon.ply";
     if (!fs::exists(path)) GTEST_SKIP() << "no shared mesh " << path;
     glint::Scene scene;
     glint::MeshCache cache;
@@ -132,7 +132,7 @@ TEST(MeshLoader, ObjWithMtlGetsItsMaterialAndTexture) {
 }
 
 TEST(MeshLoader, GltfImportKeepsInstancingAndMaterials) {
-    const fs::path gltf = fs::path(GLINT_SHARED_DATA_DIR) / "gltf";
+    const fs::path gltf = glint_test::kSharedDataDir / "gltf";
     const fs::path instancing = gltf / "SimpleInstancing/glTF-Binary/SimpleInstancing.glb";
     const fs::path spheres = gltf / "MetalRoughSpheresNoTextures/glTF-Binary/MetalRoughSpheresNoTextures.glb";
     if (!fs::exists(instancing) || !fs::exists(spheres)) GTEST_SKIP() << "no shared glTF samples";

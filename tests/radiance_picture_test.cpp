@@ -7,6 +7,7 @@
 #include "image/image_codec.h"
 
 #include "glint/image/image_io.h"
+#include "source_paths.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -166,7 +167,7 @@ TEST(RadiancePicture, EveryMantissaAndExponentIsTheByteTimesTwoToTheExponentMinu
 
 TEST(RadiancePicture, EveryHdrOfTheExamplesAndSharedDataReadsAsOpenImageIOReadsIt) {
     std::vector<fs::path> files;
-    for (const fs::path& dir : {fs::path(GLINT_SOURCE_DIR) / "scenes/assets", fs::path(GLINT_SHARED_DATA_DIR) / "env"})
+    for (const fs::path& dir : {glint_test::kScenesDir / "assets", glint_test::kSharedDataDir / "env"})
         if (fs::is_directory(dir))
             for (const auto& entry : fs::recursive_directory_iterator(dir))
                 if (entry.path().extension() == ".hdr") files.push_back(entry.path());

@@ -104,7 +104,7 @@ class SceneReference : public testing::TestWithParam<std::string> {};
 
 TEST_P(SceneReference, MatchesReference) {
     const std::string name = GetParam();
-    LoadedScene loaded = load_toml_scene(glint_test::kSourceDir / "scenes" / (name + ".toml"));
+    LoadedScene loaded = load_toml_scene(glint_test::kScenesDir / (name + ".toml"));
     const Image image = render(loaded);
     const std::filesystem::path reference_path = glint_test::kSourceDir / "tests" / "references" / (name + ".exr");
     if (updating_references()) {
@@ -130,23 +130,23 @@ TEST(ReferenceComparison, DetectsAChangedScene) {
     // The check must be able to fail: the spheres scene without its mirror reflections
     // (max depth 0), or with its red material 0.01 redder, must not pass as the reference.
     const Image reference = read_image(glint_test::kSourceDir / "tests" / "references" / "spheres.exr");
-    LoadedScene flat = load_toml_scene(glint_test::kSourceDir / "scenes" / "spheres.toml");
+    LoadedScene flat = load_toml_scene(glint_test::kScenesDir / "spheres.toml");
     flat.settings.max_depth = 0;
     const ImageDifference flat_difference = compare(render(flat), reference);
     EXPECT_FALSE(matches(flat_difference)) << flat_difference;
 
-    std::ifstream in(glint_test::kSourceDir / "scenes" / "spheres.toml");
+    std::ifstream in(glint_test::kScenesDir / "spheres.toml");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string red = "diffuse = [0.63, 0.105, 0.07]";
     ASSERT_NE(text.find(red), std::string::npos);
     text.replace(text.find(red), red.size(), "diffuse = [0.64, 0.105, 0.07]");
-    LoadedScene redder = load_toml_scene_string(text, "spheres.toml", glint_test::kSourceDir / "scenes");
+    LoadedScene redder = load_toml_scene_string(text, "spheres.toml", glint_test::kScenesDir);
     const ImageDifference redder_difference = compare(render(redder), reference);
     EXPECT_FALSE(matches(redder_difference)) << redder_difference;
 }
 
 TEST(ReferenceComparison, SpheresFileRendersLikeTheBuiltInScene) {
-    LoadedScene file = load_toml_scene(glint_test::kSourceDir / "scenes" / "spheres.toml");
+    LoadedScene file = load_toml_scene(glint_test::kScenesDir / "spheres.toml");
     LoadedScene built_in;
     built_in.scene = make_spheres_scene();
     built_in.settings = file.settings;

@@ -10,6 +10,7 @@ namespace glint_test {
 inline const std::filesystem::path kSourceDir{GLINT_SOURCE_DIR};
 inline const std::filesystem::path kScenesDir = kSourceDir / "scenes";
 inline const std::filesystem::path kTestDataDir = kSourceDir / "tests" / "data";
-inline const std::filesystem::path kSharedMeshDir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
+inline const std::filesystem::path kSharedDataDir{GLINT_SHARED_DATA_DIR};
+inline const std::filesystem::path kSharedMeshDir = kSharedDataDir / "meshes";
 
 }  // namespace glint_test

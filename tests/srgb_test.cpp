@@ -7,8 +7,9 @@
 #include "glint/assets/gltf_scene_loader.h"
 #include "glint/math/color.h"
 
-#include <gtest/gtest.h>
+#include "source_paths.h"
 
+#include <gtest/gtest.h>
 
 #include <filesystem>
 
@@ -59,7 +60,7 @@ TEST(Srgb, GltfTextureIsDecodedWithStraightAlpha) {
 }
 
 TEST(Srgb, HdrFilesStayLinearAndPalettePngDecodes) {
-    const std::filesystem::path data(GLINT_SHARED_DATA_DIR);
+    const std::filesystem::path data = glint_test::kSharedDataDir;
     const auto hdr = data / "env/equirect/studio_small_03_1k.hdr";
     const auto palette = data / "textures/kenney_prototype_orange_checker_1024.png";
     if (!std::filesystem::exists(hdr) || !std::filesystem::exists(palette)) GTEST_SKIP() << "no shared data";

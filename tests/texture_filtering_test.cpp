@@ -13,6 +13,7 @@
 #include "glint/scene/camera.h"
 #include "glint/scene/render_scene.h"
 #include "glint/scene_format/toml_scene_loader.h"
+#include "source_paths.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -94,7 +95,7 @@ struct BandStatistics {
 /// Mean and standard deviation of the red channel over rows 1 to 8 below the horizon (the
 /// image's centre row), 7 to 40 units away, where a pixel is 0.1 to 0.7 units wide.
 BandStatistics far_band(const std::string& text, const std::string& integrator,
-                        const std::filesystem::path& base = std::filesystem::path(GLINT_SOURCE_DIR) / "scenes") {
+                        const std::filesystem::path& base = glint_test::kScenesDir) {
     LoadedScene loaded = load_toml_scene_string(text, "checks.toml", base);
     loaded.settings.integrator = integrator;
     const RenderScene scene(std::move(loaded.scene));
@@ -159,8 +160,8 @@ uv_scale = [25000, 25000]
 TEST(TextureFiltering, NearChecksStaySharp) {
     // The bottom row sees squares of 4000/2000 = 2 units about 2.4 units away, many pixels
     // wide: filtering must not grey them.
-    LoadedScene loaded = load_toml_scene_string(scene_text(procedural_checks(2000), false), "checks.toml",
-                                                std::filesystem::path(GLINT_SOURCE_DIR) / "scenes");
+    LoadedScene loaded =
+        load_toml_scene_string(scene_text(procedural_checks(2000), false), "checks.toml", glint_test::kScenesDir);
     const RenderScene scene(std::move(loaded.scene));
     Film film(loaded.settings.width, loaded.settings.height);
     make_integrator(loaded.settings)->render(scene, loaded.settings, film);

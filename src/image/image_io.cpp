@@ -9,7 +9,6 @@
 #include "glint/math/color.h"
 #include "glint/util/file_extension.h"
 #include "glint/util/move_into_place.h"
-#include "glint/util/whole_file.h"
 
 #include <algorithm>
 #include <array>
