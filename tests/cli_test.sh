@@ -309,11 +309,14 @@ loads libOpenImageIO.so render -o start.tif --width 1 --height 1 -q ||
   fail "a render to TIFF did not load OpenImageIO (is the check blind?)"
 # Open MPI is glint-mpi's alone (app/program_beside.h): no command of glint loads it.
 loads libmpi.so render -o start.png --width 1 --height 1 -q && fail "a render loaded Open MPI"
-# assimp is loaded by a run that reads a mesh file, and only by one (src/assets/assimp_module.h).
+# assimp is loaded by a run that reads a mesh file other than a plain binary PLY, and only by
+# one (src/assets/assimp_module.h, src/assets/ply_triangles.h).
 loads libassimp.so --help && fail "glint --help loaded assimp"
 loads libassimp.so render -o start.png --width 1 --height 1 -q && fail "a render without meshes loaded assimp"
-loads libassimp.so render "$scenes/bunny_glass.toml" -o start.png --width 1 --height 1 -q ||
-  fail "a render of the glass bunny did not load assimp (is the check blind?)"
+loads libassimp.so render "$scenes/bunny_glass.toml" -o start.png --width 1 --height 1 -q &&
+  fail "a render of the glass bunny (a binary PLY of triangles) loaded assimp"
+loads libassimp.so render "$scenes/../tests/data/vertex_colored_triangle.ply" -o start.png --width 1 --height 1 -q ||
+  fail "a render of an ASCII PLY did not load assimp (is the check blind?)"
 
 echo "$(( failures == 0 ? 1 : 0 )) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -6,6 +6,7 @@
 #include "mesh_file_bytes.h"
 #include "name_list.h"
 #include "ply_header.h"
+#include "ply_triangles.h"
 
 #include "glint/diagnostics.h"
 #include "glint/util/file_extension.h"
@@ -75,6 +76,11 @@ std::string bytes_of(assimp_import::Outcome outcome) {
 MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
     if (!std::filesystem::exists(path)) throw SceneError(path.string() + ": no such mesh file");
     check_ply_header(path);
+    if (std::optional<MeshFile> plain = read_plain_ply(path, mode)) return std::move(*plain);
+    return read_mesh_file_with_assimp(path, mode);
+}
+
+MeshFile read_mesh_file_with_assimp(const std::filesystem::path& path, ReadMode mode) {
     const std::string context = path.string() + ": cannot read mesh file";
     const assimp_import::Functions& functions = assimp();
     const LargeArray<char> bytes = run_isolated(

@@ -1,5 +1,6 @@
 #pragma once
-/// \file A mesh file read through assimp into Glint meshes, before placing it in a scene.
+/// \file A mesh file read into Glint meshes (through assimp, or for plain PLY files by Glint
+/// itself), before placing it in a scene.
 /// Internal: import_mesh_file() and the glTF scene loader share it.
 
 #include "glint/geometry/triangle_mesh.h"
@@ -66,9 +67,12 @@ enum class ReadMode {
     Lenient,
 };
 
-/// Read `path` with assimp. Throws SceneError naming the file and the problem when nothing
-/// usable is in it, or, in Strict mode, at the first unusable vertex or triangle.
+/// Read `path`: a plain binary PLY triangle mesh with Glint's own reader (ply_triangles.h),
+/// every other file with assimp. Throws SceneError naming the file and the problem when
+/// nothing usable is in it, or, in Strict mode, at the first unusable vertex or triangle.
 [[nodiscard]] MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode);
+/// read_mesh_file's reading through assimp, for any file (tests compare the two readers).
+[[nodiscard]] MeshFile read_mesh_file_with_assimp(const std::filesystem::path& path, ReadMode mode);
 
 namespace gltf {
 struct Document;

@@ -1,0 +1,283 @@
+#include "ply_triangles.h"
+
+#include "glint/util/large_array.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glint {
+
+namespace {
+
+enum class Scalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+std::optional<Scalar> scalar_named(std::string_view name) {
+    static constexpr std::pair<std::string_view, Scalar> kNames[] = {
+        {"char", Scalar::Int8},      {"int8", Scalar::Int8},       {"uchar", Scalar::UInt8},
+        {"uint8", Scalar::UInt8},    {"short", Scalar::Int16},     {"int16", Scalar::Int16},
+        {"ushort", Scalar::UInt16},  {"uint16", Scalar::UInt16},   {"int", Scalar::Int32},
+        {"int32", Scalar::Int32},    {"uint", Scalar::UInt32},     {"uint32", Scalar::UInt32},
+        {"float", Scalar::Float32},  {"float32", Scalar::Float32}, {"double", Scalar::Float64},
+        {"float64", Scalar::Float64}};
+    for (const auto& [text, scalar] : kNames)
+        if (text == name) return scalar;
+    return std::nullopt;
+}
+
+std::size_t size_of(Scalar s) {
+    switch (s) {
+        case Scalar::Int8:
+        case Scalar::UInt8:
+            return 1;
+        case Scalar::Int16:
+        case Scalar::UInt16:
+            return 2;
+        case Scalar::Int32:
+        case Scalar::UInt32:
+        case Scalar::Float32:
+            return 4;
+        case Scalar::Float64:
+            return 8;
+    }
+    return 0;
+}
+
+/// The value of the scalar at `p`, stored big-endian when `swap` (this reader runs on
+/// little-endian machines only). Every type's values are exact in double.
+double scalar_at(const char* p, Scalar type, bool swap) {
+    char b[8];
+    const std::size_t n = size_of(type);
+    for (std::size_t i = 0; i < n; ++i) b[i] = p[swap ? n - 1 - i : i];
+    auto as = [&b]<typename T>(T) {
+        T value;
+        std::memcpy(&value, b, sizeof(T));
+        return static_cast<double>(value);
+    };
+    switch (type) {
+        case Scalar::Int8:
+            return as(int8_t{});
+        case Scalar::UInt8:
+            return as(uint8_t{});
+        case Scalar::Int16:
+            return as(int16_t{});
+        case Scalar::UInt16:
+            return as(uint16_t{});
+        case Scalar::Int32:
+            return as(int32_t{});
+        case Scalar::UInt32:
+            return as(uint32_t{});
+        case Scalar::Float32:
+            return as(float{});
+        case Scalar::Float64:
+            return as(double{});
+    }
+    return 0.0;
+}
+
+struct Property {
+    std::string name;
+    Scalar type = Scalar::Float32;
+    std::optional<Scalar> list_count;  ///< set for a list property
+};
+
+struct Element {
+    std::string name;
+    uint64_t count = 0;
+    std::vector<Property> properties;
+};
+
+struct Header {
+    bool big_endian = false;
+    std::vector<Element> elements;
+    std::size_t data_offset = 0;
+};
+
+std::vector<std::string_view> words_of(std::string_view line) {
+    std::vector<std::string_view> words;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+        if (i > start) words.push_back(line.substr(start, i - start));
+    }
+    return words;
+}
+
+/// The header of a binary PLY file whose every line this reader understands; nothing
+/// otherwise (ASCII, "\r\n" line ends, unknown keywords or types).
+std::optional<Header> binary_header(std::string_view bytes) {
+    Header header;
+    bool format_seen = false;
+    std::size_t at = 0, line_number = 0;
+    for (;;) {
+        const std::size_t end = bytes.find('\n', at);
+        if (end == std::string_view::npos) return std::nullopt;
+        const std::string_view line = bytes.substr(at, end - at);
+        at = end + 1;
+        if (line.find('\r') != std::string_view::npos) return std::nullopt;
+        if (line_number++ == 0) {
+            if (line != "ply") return std::nullopt;
+            continue;
+        }
+        const std::vector<std::string_view> words = words_of(line);
+        if (words.empty()) return std::nullopt;
+        if (words[0] == "end_header" && words.size() == 1) break;
+        if (words[0] == "comment" || words[0] == "obj_info") continue;
+        if (words[0] == "format") {
+            if (format_seen || words.size() != 3 || words[2] != "1.0") return std::nullopt;
+            if (words[1] != "binary_little_endian" && words[1] != "binary_big_endian") return std::nullopt;
+            header.big_endian = words[1] == "binary_big_endian";
+            format_seen = true;
+        } else if (words[0] == "element" && words.size() == 3) {
+            Element element{std::string(words[1]), 0, {}};
+            for (const char c : words[2]) {
+                if (c < '0' || c > '9' || element.count > std::numeric_limits<uint64_t>::max() / 10 - 1)
+                    return std::nullopt;
+                element.count = element.count * 10 + uint64_t(c - '0');
+            }
+            header.elements.push_back(std::move(element));
+        } else if (words[0] == "property" && !header.elements.empty()) {
+            Property property;
+            if (words.size() == 3 && scalar_named(words[1])) {
+                property = {std::string(words[2]), *scalar_named(words[1]), std::nullopt};
+            } else if (words.size() == 5 && words[1] == "list" && scalar_named(words[2]) && scalar_named(words[3])) {
+                property = {std::string(words[4]), *scalar_named(words[3]), scalar_named(words[2])};
+            } else {
+                return std::nullopt;
+            }
+            header.elements.back().properties.push_back(std::move(property));
+        } else {
+            return std::nullopt;
+        }
+    }
+    if (!format_seen) return std::nullopt;
+    header.data_offset = at;
+    return header;
+}
+
+bool is_index_type(Scalar s) { return s == Scalar::Int32 || s == Scalar::UInt32; }
+bool is_count_type(Scalar s) { return s == Scalar::UInt8 || is_index_type(s); }
+
+/// A PLY file carries no material. assimp describes it as white, diffuse and specular,
+/// which convert_assimp_material (assimp_import.cpp) makes this Material; the same here, so
+/// that a mesh without a scene material looks as it did when assimp read every PLY file.
+Material assimp_default_ply_material() {
+    Material m;
+    m.name = "material0";
+    m.diffuse = Color(1.0f);
+    m.ambient = m.diffuse;
+    m.specular = Color(1.0f);
+    return m;
+}
+
+}  // namespace
+
+std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMode mode) {
+    // The header first, from the file's start: any other file (OBJ, glTF, an ASCII PLY) is
+    // left to assimp without being read whole.
+    constexpr std::uintmax_t kHeaderBytes = 64 << 10;
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) return std::nullopt;
+    std::ifstream in(path, std::ios::binary);
+    std::string start(std::min(size, kHeaderBytes), '\0');
+    if (!in.read(start.data(), std::streamsize(start.size()))) return std::nullopt;
+    const std::optional<Header> header = binary_header(start);
+    if (!header || header->elements.size() != 2) return std::nullopt;
+    const Element& vertices = header->elements[0];
+    const Element& faces = header->elements[1];
+    if (vertices.name != "vertex" || faces.name != "face" || vertices.count == 0 || faces.count == 0 ||
+        vertices.count > std::numeric_limits<uint32_t>::max())
+        return std::nullopt;
+
+    // Where each vertex property lies in its record; x, y, z needed, nx, ny, nz all or none.
+    constexpr std::string_view kNames[6] = {"x", "y", "z", "nx", "ny", "nz"};
+    std::size_t offset[6] = {}, record = 0;
+    Scalar type[6] = {};
+    bool present[6] = {};
+    for (const Property& property : vertices.properties) {
+        const auto* name = std::find(std::begin(kNames), std::end(kNames), property.name);
+        if (name == std::end(kNames) || property.list_count || property.type < Scalar::Float32) return std::nullopt;
+        const auto k = std::size_t(name - std::begin(kNames));
+        if (present[k]) return std::nullopt;
+        present[k] = true;
+        offset[k] = record;
+        type[k] = property.type;
+        record += size_of(property.type);
+    }
+    const bool has_normals = present[3] && present[4] && present[5];
+    if (!present[0] || !present[1] || !present[2] || (!has_normals && (present[3] || present[4] || present[5])))
+        return std::nullopt;
+
+    if (faces.properties.size() != 1) return std::nullopt;
+    const Property& list = faces.properties[0];
+    if (!list.list_count || !is_count_type(*list.list_count) || !is_index_type(list.type) ||
+        (list.name != "vertex_indices" && list.name != "vertex_index"))
+        return std::nullopt;
+    // Three indices per face is the only layout read here, so the data's size is known
+    // before it is read; any other size (other face lengths, a cut or a longer file) is
+    // left to assimp.
+    const std::size_t count_size = size_of(*list.list_count), index_size = size_of(list.type);
+    const std::size_t face_record = count_size + 3 * index_size;
+    const uint64_t available = size - header->data_offset;
+    if (vertices.count > available / record || faces.count > available / face_record ||
+        vertices.count * record + faces.count * face_record != available)
+        return std::nullopt;
+    // In huge pages (large_array.h): a scan's data is tens of megabytes, read once.
+    LargeArray<char> bytes(available);
+    if (!in.seekg(std::streamoff(header->data_offset)) || !in.read(bytes.data(), std::streamsize(available)) ||
+        in.peek() != std::ifstream::traits_type::eof())
+        return std::nullopt;
+
+    const bool swap = header->big_endian;
+    MeshData data;
+    const auto vertex_count = static_cast<uint32_t>(vertices.count);
+    data.positions.resize(vertex_count);
+    if (has_normals) data.normals.resize(vertex_count);
+    const char* p = bytes.data();
+    for (uint32_t v = 0; v < vertex_count; ++v, p += record) {
+        float value[6];
+        for (int k = 0; k < (has_normals ? 6 : 3); ++k) value[k] = float(scalar_at(p + offset[k], type[k], swap));
+        data.positions[v] = Vec3(value[0], value[1], value[2]);
+        if (!is_finite(data.positions[v])) return std::nullopt;
+        if (has_normals) {
+            // As convert_mesh (assimp_import.cpp) takes a non-finite normal.
+            const Vec3 normal(value[3], value[4], value[5]);
+            data.normals[v] = is_finite(normal) ? normal : Vec3(0.0f);
+        }
+    }
+    data.indices.resize(3 * faces.count);
+    for (std::size_t f = 0; f < faces.count; ++f, p += face_record) {
+        if (scalar_at(p, *list.list_count, swap) != 3.0) return std::nullopt;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double index = scalar_at(p + count_size + k * index_size, list.type, swap);
+            if (!(index >= 0.0 && index < double(vertex_count))) return std::nullopt;
+            data.indices[3 * f + k] = static_cast<uint32_t>(index);
+        }
+    }
+
+    const bool lenient = mode == ReadMode::Lenient;
+    if (lenient && !has_normals) compute_smooth_normals(data);
+    MeshFile file;
+    file.meshes.push_back(std::make_shared<TriangleMesh>(std::move(data), "mesh0"));
+    file.mesh_materials = {0};
+    file.placements = {MeshPlacement{0, Matrix4::identity(), ""}};
+    file.distinct_meshes = 1;
+    if (lenient) {
+        file.materials = {assimp_default_ply_material()};
+        file.material_images = {nullptr};
+        file.material_normal_images = {nullptr};
+    }
+    return file;
+}
+
+}  // namespace glint
