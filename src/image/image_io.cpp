@@ -2,6 +2,7 @@
 
 #include "image_codec.h"
 #include "png_chunks.h"
+#include "png_reader.h"
 #include "png_writer.h"
 #include "radiance_picture.h"
 
@@ -97,6 +98,18 @@ std::optional<Image> native_radiance_picture(const unsigned char* bytes, std::si
     return image;
 }
 
+/// The PNG in `bytes` as Glint reads it (png_reader.h). Nothing when the bytes are another
+/// format or a PNG left to OpenImageIO; an ImageError naming `name` when it is too large.
+std::optional<Image> native_png(const unsigned char* bytes, std::size_t size, const std::string& name,
+                                ColorEncoding encoding) {
+    if (!codec::is_png(bytes, size)) return std::nullopt;
+    codec::DecodedImage decoded;
+    const std::optional<std::string> error = codec::read_png(bytes, size, check_size, decoded);
+    if (!error) return std::nullopt;
+    if (!error->empty()) throw ImageError(name + ": " + *error);
+    return linear_image(std::move(decoded), encoding);
+}
+
 }  // namespace
 
 Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
@@ -110,16 +123,21 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
             return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
         },
         path.string());
-    // A Radiance picture is read whole, from the stream already open, by Glint itself.
-    unsigned char magic[2] = {};
+    // A Radiance picture or a PNG is read whole, from the stream already open, by Glint itself.
+    unsigned char magic[8] = {};
     file.clear();
-    if (file.seekg(0).read(reinterpret_cast<char*>(magic), 2) && codec::is_radiance_picture(magic, 2)) {
+    file.seekg(0).read(reinterpret_cast<char*>(magic), sizeof magic);
+    const auto magic_size = std::size_t(file.gcount());
+    const bool radiance = codec::is_radiance_picture(magic, std::min<std::size_t>(magic_size, 2));
+    if (radiance || codec::is_png(magic, magic_size)) {
         std::string bytes(size, '\0');
+        file.clear();
         if (!file.seekg(0).read(bytes.data(), std::streamsize(size)))
             throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
-        if (std::optional<Image> image =
-                native_radiance_picture(reinterpret_cast<const unsigned char*>(bytes.data()), size, path.string()))
-            return std::move(*image);
+        const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+        std::optional<Image> image = radiance ? native_radiance_picture(data, size, path.string())
+                                              : native_png(data, size, path.string(), encoding);
+        if (image) return std::move(*image);
     }
     codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_file(path.string(), check_size, decoded); !error.empty())
@@ -139,6 +157,7 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
         name);
     if (std::optional<Image> image = native_radiance_picture(bytes.data(), bytes.size(), name))
         return std::move(*image);
+    if (std::optional<Image> image = native_png(bytes.data(), bytes.size(), name, encoding)) return std::move(*image);
     codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
         !error.empty())
