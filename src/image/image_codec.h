@@ -10,8 +10,8 @@
 /// that reads or writes an image 350-400 ms (on a 2-core EPYC), more than a small render: so
 /// EXR, the format renders are written in, is written by OpenEXR alone, in a second module
 /// (`libglint_exr.so`, exr_codec.cpp: four libraries, 3 ms), PNG by Glint itself over
-/// zlib (png_writer.h), and Radiance pictures, most environment maps, read by Glint too
-/// (radiance_picture.h).
+/// zlib (png_writer.h), and Radiance pictures, most environment maps, and PNG files, most
+/// textures, read by Glint too (radiance_picture.h; png_reader.h, through libpng).
 ///
 /// The modules hand out plain function pointers (no exceptions and no vtables cross the
 /// boundary); each returns "" on success and otherwise what went wrong, worded to follow
