@@ -12,19 +12,36 @@
 
 namespace glint {
 
-namespace {
-
-/// Bytes of one PLY scalar type, 0 if unknown.
-std::size_t ply_type_size(const std::string& type) {
-    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
-        return 4;
-    if (type == "double" || type == "float64") return 8;
-    return 0;
+std::optional<PlyScalar> ply_scalar_named(std::string_view name) {
+    static constexpr std::pair<std::string_view, PlyScalar> kNames[] = {
+        {"char", PlyScalar::Int8},      {"int8", PlyScalar::Int8},       {"uchar", PlyScalar::UInt8},
+        {"uint8", PlyScalar::UInt8},    {"short", PlyScalar::Int16},     {"int16", PlyScalar::Int16},
+        {"ushort", PlyScalar::UInt16},  {"uint16", PlyScalar::UInt16},   {"int", PlyScalar::Int32},
+        {"int32", PlyScalar::Int32},    {"uint", PlyScalar::UInt32},     {"uint32", PlyScalar::UInt32},
+        {"float", PlyScalar::Float32},  {"float32", PlyScalar::Float32}, {"double", PlyScalar::Float64},
+        {"float64", PlyScalar::Float64}};
+    for (const auto& [text, scalar] : kNames)
+        if (text == name) return scalar;
+    return std::nullopt;
 }
 
-}  // namespace
+std::size_t ply_scalar_size(PlyScalar type) {
+    switch (type) {
+        case PlyScalar::Int8:
+        case PlyScalar::UInt8:
+            return 1;
+        case PlyScalar::Int16:
+        case PlyScalar::UInt16:
+            return 2;
+        case PlyScalar::Int32:
+        case PlyScalar::UInt32:
+        case PlyScalar::Float32:
+            return 4;
+        case PlyScalar::Float64:
+            return 8;
+    }
+    return 0;
+}
 
 void check_ply_header(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -75,16 +92,16 @@ void check_ply_header(const std::filesystem::path& path) {
             words >> a;
             const bool list = a == "list";
             if (list) words >> a >> b;  // count type, item type
-            const std::size_t size = ply_type_size(a);
+            const std::optional<PlyScalar> type = ply_scalar_named(a);
             std::string name;
             words >> name;
-            if (!words || size == 0 || (list && ply_type_size(b) == 0))
+            if (!words || !type || (list && !ply_scalar_named(b)))
                 throw SceneError(path.string() + ":" + std::to_string(line_number) +
                                  ": cannot read mesh file: PLY property " + "line '" + line +
                                  "' is malformed (expected 'property TYPE NAME' or 'property list " +
                                  "COUNT_TYPE ITEM_TYPE NAME', types char uchar short ushort int uint float double or " +
                                  "int8 uint8 int16 uint16 int32 uint32 float32 float64)");
-            per_element += ascii ? 2.0 : double(size);
+            per_element += ascii ? 2.0 : double(ply_scalar_size(*type));
         }
     }
     if (!ended)

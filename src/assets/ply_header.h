@@ -2,9 +2,20 @@
 /// \file Glint's own reading of a PLY header, before assimp sees the file.
 /// Internal to src/assets.
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
+#include <string_view>
 
 namespace glint {
+
+/// A PLY scalar type (PLY 1.0 names and their sized aliases: char/int8 ... double/float64).
+enum class PlyScalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+/// The scalar type a header names, or nothing for an unknown name.
+[[nodiscard]] std::optional<PlyScalar> ply_scalar_named(std::string_view name);
+/// Bytes of one binary value of `type`.
+[[nodiscard]] std::size_t ply_scalar_size(PlyScalar type);
 
 /// Refuse, with a SceneError naming `path` (and the header line where there is one), a PLY
 /// file whose header assimp would mishandle; files that are not PLY pass.

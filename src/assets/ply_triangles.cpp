@@ -1,9 +1,10 @@
 #include "ply_triangles.h"
 
+#include "ply_header.h"
+
 #include "glint/util/large_array.h"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -17,44 +18,11 @@ namespace glint {
 
 namespace {
 
-enum class Scalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-std::optional<Scalar> scalar_named(std::string_view name) {
-    static constexpr std::pair<std::string_view, Scalar> kNames[] = {
-        {"char", Scalar::Int8},      {"int8", Scalar::Int8},       {"uchar", Scalar::UInt8},
-        {"uint8", Scalar::UInt8},    {"short", Scalar::Int16},     {"int16", Scalar::Int16},
-        {"ushort", Scalar::UInt16},  {"uint16", Scalar::UInt16},   {"int", Scalar::Int32},
-        {"int32", Scalar::Int32},    {"uint", Scalar::UInt32},     {"uint32", Scalar::UInt32},
-        {"float", Scalar::Float32},  {"float32", Scalar::Float32}, {"double", Scalar::Float64},
-        {"float64", Scalar::Float64}};
-    for (const auto& [text, scalar] : kNames)
-        if (text == name) return scalar;
-    return std::nullopt;
-}
-
-std::size_t size_of(Scalar s) {
-    switch (s) {
-        case Scalar::Int8:
-        case Scalar::UInt8:
-            return 1;
-        case Scalar::Int16:
-        case Scalar::UInt16:
-            return 2;
-        case Scalar::Int32:
-        case Scalar::UInt32:
-        case Scalar::Float32:
-            return 4;
-        case Scalar::Float64:
-            return 8;
-    }
-    return 0;
-}
-
 /// The value of the scalar at `p`, stored big-endian when `swap` (this reader runs on
 /// little-endian machines only). Every type's values are exact in double.
-double scalar_at(const char* p, Scalar type, bool swap) {
+double scalar_at(const char* p, PlyScalar type, bool swap) {
     char b[8];
-    const std::size_t n = size_of(type);
+    const std::size_t n = ply_scalar_size(type);
     for (std::size_t i = 0; i < n; ++i) b[i] = p[swap ? n - 1 - i : i];
     auto as = [&b]<typename T>(T) {
         T value;
@@ -62,21 +30,21 @@ double scalar_at(const char* p, Scalar type, bool swap) {
         return static_cast<double>(value);
     };
     switch (type) {
-        case Scalar::Int8:
+        case PlyScalar::Int8:
             return as(int8_t{});
-        case Scalar::UInt8:
+        case PlyScalar::UInt8:
             return as(uint8_t{});
-        case Scalar::Int16:
+        case PlyScalar::Int16:
             return as(int16_t{});
-        case Scalar::UInt16:
+        case PlyScalar::UInt16:
             return as(uint16_t{});
-        case Scalar::Int32:
+        case PlyScalar::Int32:
             return as(int32_t{});
-        case Scalar::UInt32:
+        case PlyScalar::UInt32:
             return as(uint32_t{});
-        case Scalar::Float32:
+        case PlyScalar::Float32:
             return as(float{});
-        case Scalar::Float64:
+        case PlyScalar::Float64:
             return as(double{});
     }
     return 0.0;
@@ -84,8 +52,8 @@ double scalar_at(const char* p, Scalar type, bool swap) {
 
 struct Property {
     std::string name;
-    Scalar type = Scalar::Float32;
-    std::optional<Scalar> list_count;  ///< set for a list property
+    PlyScalar type = PlyScalar::Float32;
+    std::optional<PlyScalar> list_count;  ///< set for a list property
 };
 
 struct Element {
@@ -147,10 +115,11 @@ std::optional<Header> binary_header(std::string_view bytes) {
             header.elements.push_back(std::move(element));
         } else if (words[0] == "property" && !header.elements.empty()) {
             Property property;
-            if (words.size() == 3 && scalar_named(words[1])) {
-                property = {std::string(words[2]), *scalar_named(words[1]), std::nullopt};
-            } else if (words.size() == 5 && words[1] == "list" && scalar_named(words[2]) && scalar_named(words[3])) {
-                property = {std::string(words[4]), *scalar_named(words[3]), scalar_named(words[2])};
+            if (words.size() == 3 && ply_scalar_named(words[1])) {
+                property = {std::string(words[2]), *ply_scalar_named(words[1]), std::nullopt};
+            } else if (words.size() == 5 && words[1] == "list" && ply_scalar_named(words[2]) &&
+                       ply_scalar_named(words[3])) {
+                property = {std::string(words[4]), *ply_scalar_named(words[3]), ply_scalar_named(words[2])};
             } else {
                 return std::nullopt;
             }
@@ -164,8 +133,8 @@ std::optional<Header> binary_header(std::string_view bytes) {
     return header;
 }
 
-bool is_index_type(Scalar s) { return s == Scalar::Int32 || s == Scalar::UInt32; }
-bool is_count_type(Scalar s) { return s == Scalar::UInt8 || is_index_type(s); }
+bool is_index_type(PlyScalar s) { return s == PlyScalar::Int32 || s == PlyScalar::UInt32; }
+bool is_count_type(PlyScalar s) { return s == PlyScalar::UInt8 || is_index_type(s); }
 
 /// A PLY file carries no material. assimp describes it as white, diffuse and specular,
 /// which convert_assimp_material (assimp_import.cpp) makes this Material; the same here, so
@@ -202,17 +171,17 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     // Where each vertex property lies in its record; x, y, z needed, nx, ny, nz all or none.
     constexpr std::string_view kNames[6] = {"x", "y", "z", "nx", "ny", "nz"};
     std::size_t offset[6] = {}, record = 0;
-    Scalar type[6] = {};
+    PlyScalar type[6] = {};
     bool present[6] = {};
     for (const Property& property : vertices.properties) {
         const auto* name = std::find(std::begin(kNames), std::end(kNames), property.name);
-        if (name == std::end(kNames) || property.list_count || property.type < Scalar::Float32) return std::nullopt;
+        if (name == std::end(kNames) || property.list_count || property.type < PlyScalar::Float32) return std::nullopt;
         const auto k = std::size_t(name - std::begin(kNames));
         if (present[k]) return std::nullopt;
         present[k] = true;
         offset[k] = record;
         type[k] = property.type;
-        record += size_of(property.type);
+        record += ply_scalar_size(property.type);
     }
     const bool has_normals = present[3] && present[4] && present[5];
     if (!present[0] || !present[1] || !present[2] || (!has_normals && (present[3] || present[4] || present[5])))
@@ -226,7 +195,7 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     // Three indices per face is the only layout read here, so the data's size is known
     // before it is read; any other size (other face lengths, a cut or a longer file) is
     // left to assimp.
-    const std::size_t count_size = size_of(*list.list_count), index_size = size_of(list.type);
+    const std::size_t count_size = ply_scalar_size(*list.list_count), index_size = ply_scalar_size(list.type);
     const std::size_t face_record = count_size + 3 * index_size;
     const uint64_t available = size - header->data_offset;
     if (vertices.count > available / record || faces.count > available / face_record ||
