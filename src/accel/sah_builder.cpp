@@ -342,8 +342,9 @@ BinaryBvh build_binary_bvh(std::span<const Bounds3> primitive_bounds, const BvhB
     bvh.nodes.resize(2 * size_t(n));
     Builder builder(refs, config, bvh.nodes);
     builder.build(0, 0, n, 0);
+    // Not shrunk to fit: the binary tree lives only until the collapse, and a shrink would
+    // copy it into freshly faulted pages.
     bvh.nodes.resize(builder.node_count());
-    bvh.nodes.shrink_to_fit();
     bvh.order.resize(n);
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 1u << 14), [&](const tbb::blocked_range<uint32_t>& r) {
         for (uint32_t i = r.begin(); i < r.end(); ++i) bvh.order[i] = refs[i].id();

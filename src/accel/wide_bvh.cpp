@@ -54,6 +54,21 @@ public:
             if (!binary_.nodes[slots[i]].is_leaf()) fill(nodes_[index].child[i], slots[i]);
     }
 
+    /// The number of wide nodes fill(·, root) makes: the planned collapse read off as fill
+    /// does, without writing, so that the nodes are allocated once at their final size.
+    [[nodiscard]] size_t count_nodes(uint32_t root) const {
+        uint32_t slots[WideNode::kWidth];
+        uint32_t used = 0;
+        const BvhNode& r = binary_.nodes[root];
+        if (r.is_leaf()) return 1;
+        distribute(r.index, plan_[root].own_split, slots, used);
+        distribute(r.index + 1, WideNode::kWidth - plan_[root].own_split, slots, used);
+        size_t count = 1;
+        for (uint32_t i = 0; i < used; ++i)
+            if (!binary_.nodes[slots[i]].is_leaf()) count += count_nodes(slots[i]);
+        return count;
+    }
+
     /// Plans the collapse that minimises the summed surface area of the wide nodes (the
     /// expected number of node visits; the leaves are the binary tree's either way): the
     /// dynamic program of Ylitie, Karras and Laine 2017 ("Efficient Incoherent Ray
@@ -163,14 +178,14 @@ void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildCon
     bounds_ = binary.nodes[0].bounds;
     size_t binary_leaves = 0;
     for (const BvhNode& n : binary.nodes) binary_leaves += n.is_leaf() ? 1 : 0;
-    // Each wide node absorbs at least one binary inner node (one per binary leaf, minus one).
-    nodes_.reserve(binary_leaves);
     leaves_.reserve(binary_leaves);
-    nodes_.emplace_back();
     Collapser collapser(binary, nodes_, leaves_);
     collapser.plan();
+    // Reserved at the exact count: growing and then shrinking to fit copied the nodes once
+    // more and faulted in their pages twice (docs/performance.md, "The build's page faults").
+    nodes_.reserve(collapser.count_nodes(0));
+    nodes_.emplace_back();
     collapser.fill(0, 0);
-    nodes_.shrink_to_fit();
     order_ = std::move(binary.order);
 }
 

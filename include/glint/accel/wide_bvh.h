@@ -118,9 +118,10 @@ private:
     [[nodiscard]] static uint32_t intersect_node_far_to_near(const WideNode& node, const WideRay& r, float tmin,
                                                              float tmax, uint32_t* child, float* t_enter);
 
-    // The nodes stay in ordinary memory, as do TriangleBvh's blocks: from LargeArray, camera
-    // rays on the bunny ran 6-9 % slower (docs/performance.md, "Page faults"); the build's
-    // temporaries, which are written once, gain the most from it.
+    // The nodes stay in ordinary memory: from LargeArray, camera rays on the bunny ran up to
+    // 6-9 % slower in some runs and gained nothing elsewhere (docs/performance.md, "Page
+    // faults" and "The build's page faults"). TriangleBvh's blocks, three quarters of the
+    // bytes, do gain from huge pages.
     std::vector<WideNode> nodes_;
     LargeArray<WideLeaf> leaves_;
     LargeArray<uint32_t> order_;
