@@ -70,7 +70,7 @@ TEST(MeshFileBytes, EverythingComesBackAsItWas) {
     EXPECT_EQ(back.meshes[1], nullptr);
     EXPECT_EQ(back.meshes[0]->name(), "Cube");
     const glint::MeshData& data = back.meshes[0]->data();
-    EXPECT_EQ(data.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
+    EXPECT_EQ(data.indices, (glint::LargeArray<uint32_t>{0, 1, 2, 0, 2, 3}));
     EXPECT_EQ(data.positions[3].z, 1.0f);
     EXPECT_EQ(data.normals[3].x, 1.0f);
     EXPECT_EQ(data.uvs[3].y, 0.5f);

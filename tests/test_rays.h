@@ -32,7 +32,7 @@ inline std::vector<glint::Ray> random_rays(const glint::Bounds3& box, int count,
 /// Points a watertight test must not let a ray slip through: the mesh's vertices and, on
 /// every edge, its midpoint and the points a quarter and a third of the way along.
 inline std::vector<glint::Vec3> vertices_and_edge_points(const glint::MeshData& m) {
-    std::vector<glint::Vec3> points(m.positions);
+    std::vector<glint::Vec3> points(m.positions.begin(), m.positions.end());
     for (size_t t = 0; t < m.indices.size(); t += 3)
         for (int k = 0; k < 3; ++k) {
             const glint::Vec3& a = m.positions[m.indices[t + k]];

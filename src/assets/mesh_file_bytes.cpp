@@ -173,13 +173,13 @@ MeshFile mesh_file_from_bytes(std::string_view bytes, const std::string& context
             }
             std::string name = r.text();
             MeshData data;
-            data.positions = r.array<Vec3>();
-            data.indices = r.array<uint32_t>();
-            data.normals = r.array<Vec3>();
-            data.uvs = r.array<Vec2>();
-            data.colors = r.array<Color>();
-            data.vertex_materials = r.array<uint32_t>();
-            data.tangents = r.array<Tangent>();
+            data.positions = r.array<Vec3, LargeArrayAllocator<Vec3>>();
+            data.indices = r.array<uint32_t, LargeArrayAllocator<uint32_t>>();
+            data.normals = r.array<Vec3, LargeArrayAllocator<Vec3>>();
+            data.uvs = r.array<Vec2, LargeArrayAllocator<Vec2>>();
+            data.colors = r.array<Color, LargeArrayAllocator<Color>>();
+            data.vertex_materials = r.array<uint32_t, LargeArrayAllocator<uint32_t>>();
+            data.tangents = r.array<Tangent, LargeArrayAllocator<Tangent>>();
             file.meshes.push_back(std::make_shared<TriangleMesh>(std::move(data), std::move(name)));
         }
         file.mesh_materials = r.array<uint32_t>();

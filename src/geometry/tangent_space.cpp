@@ -26,7 +26,7 @@ Vec3 unit_or_zero(const Vec3& v) {
 
 }  // namespace
 
-std::vector<Tangent> compute_tangents(const MeshData& data) {
+LargeArray<Tangent> compute_tangents(const MeshData& data) {
     const std::size_t n = data.positions.size();
     if (data.normals.size() != n || data.uvs.size() != n) return {};
     std::vector<Vec3> along_u(n), up_in_image(n);
@@ -42,7 +42,7 @@ std::vector<Tangent> compute_tangents(const MeshData& data) {
             up_in_image[i[k]] += up * angle;
         }
     }
-    std::vector<Tangent> tangents(n);
+    LargeArray<Tangent> tangents(n);
     for (std::size_t v = 0; v < n; ++v) {
         const Vec3& normal = data.normals[v];
         Vec3 t = unit_or_zero(along_u[v] - normal * dot(normal, along_u[v]));

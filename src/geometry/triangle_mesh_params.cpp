@@ -50,9 +50,12 @@ bool degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
 /// Normals, uvs and per-vertex materials (each optional, one per vertex), then the mesh.
 std::shared_ptr<Shape> finish_mesh(const ParamTable& t, const BuildContext& context, MeshData data,
                                    std::string_view list_key) {
-    data.normals = t.vec3_list("normals", false);
-    data.uvs = t.vec2_list("uvs");
-    data.vertex_materials = material_list(t, context);
+    const std::vector<Vec3> normals = t.vec3_list("normals", false);
+    data.normals.assign(normals.begin(), normals.end());
+    const std::vector<Vec2> uvs = t.vec2_list("uvs");
+    data.uvs.assign(uvs.begin(), uvs.end());
+    const std::vector<uint32_t> materials = material_list(t, context);
+    data.vertex_materials.assign(materials.begin(), materials.end());
     const std::size_t n = data.positions.size();
     auto check_size = [&](std::string_view key, std::size_t size) {
         if (size != 0 && size != n) t.fail(key, fmt::format("one entry per vertex ({})", n));
@@ -71,7 +74,8 @@ std::shared_ptr<Shape> finish_mesh(const ParamTable& t, const BuildContext& cont
 
 std::shared_ptr<Shape> TriangleMesh::triangle_from_params(const ParamTable& t, const BuildContext& context) {
     MeshData data;
-    data.positions = t.vec3_list("vertices", true);
+    const std::vector<Vec3> corners = t.vec3_list("vertices", true);
+    data.positions.assign(corners.begin(), corners.end());
     if (data.positions.size() != 3) t.fail("vertices", "three corners [[x, y, z], [x, y, z], [x, y, z]]");
     if (degenerate(data.positions[0], data.positions[1], data.positions[2]))
         throw_scene_error(t.find("vertices")->where(),
@@ -84,7 +88,8 @@ std::shared_ptr<Shape> TriangleMesh::triangle_from_params(const ParamTable& t, c
 
 std::shared_ptr<Shape> TriangleMesh::from_params(const ParamTable& t, const BuildContext& context) {
     MeshData data;
-    data.positions = t.vec3_list("positions", true);
+    const std::vector<Vec3> positions = t.vec3_list("positions", true);
+    data.positions.assign(positions.begin(), positions.end());
     const auto indices = index_values(t);
     for (std::size_t k = 0; k < indices.size(); ++k) {
         const int64_t i = indices[k]->as_integer(t.name_of("indices"));

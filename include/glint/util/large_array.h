@@ -1,11 +1,12 @@
 #pragma once
-/// \file Arrays of megabytes that a render fills once (the BVH builder's temporaries, the
-/// wide tree's leaf ranges, the film): from 2 MiB on they are placed on 2 MiB boundaries and
-/// offered to the kernel as transparent huge pages (Linux `madvise(MADV_HUGEPAGE)`, as
-/// Embree does with its `hugepages` option), so that the first write to each 2 MiB costs one
-/// page fault instead of 512. On a virtual machine a 4 KiB fault costs about 10 µs: building
-/// the BVH of the 202,520-triangle dragon took 11,500 of them, two thirds of the build
-/// (docs/performance.md, "Page faults").
+/// \file Arrays of megabytes that a render fills once (a mesh's vertices and indices, the
+/// BVH builder's temporaries, the wide tree's leaf ranges, the triangle blocks, the film):
+/// from 2 MiB on they are placed on 2 MiB boundaries and offered to the kernel as
+/// transparent huge pages (Linux `madvise(MADV_HUGEPAGE)`, as Embree does with its
+/// `hugepages` option), so that the first write to each 2 MiB costs one page fault instead
+/// of 512. On a virtual machine a 4 KiB fault costs about 10 µs: building the BVH of the
+/// 202,520-triangle dragon took 11,500 of them, two thirds of the build (docs/performance.md,
+/// "Page faults" and "The build's page faults").
 ///
 /// Smaller arrays, and systems without transparent huge pages, get ordinary memory.
 
