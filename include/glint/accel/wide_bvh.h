@@ -118,10 +118,9 @@ private:
     [[nodiscard]] static uint32_t intersect_node_far_to_near(const WideNode& node, const WideRay& r, float tmin,
                                                              float tmax, uint32_t* child, float* t_enter);
 
-    // The nodes stay in ordinary memory: from LargeArray, camera rays on the bunny ran up to
-    // 6-9 % slower in some runs and gained nothing elsewhere (docs/performance.md, "Page
-    // faults" and "The build's page faults"). TriangleBvh's blocks, three quarters of the
-    // bytes, do gain from huge pages.
+    // The nodes stay in ordinary memory: in huge pages the dragon's camera rays and packets
+    // ran slower in the session measured (docs/performance.md, "The build's page faults"),
+    // while TriangleBvh's blocks, three quarters of the bytes, gain from them.
     std::vector<WideNode> nodes_;
     LargeArray<WideLeaf> leaves_;
     LargeArray<uint32_t> order_;
