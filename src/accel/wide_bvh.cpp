@@ -16,14 +16,7 @@ public:
     /// Fills wide node `index` with the subtree of binary node `root`.
     void fill(uint32_t index, uint32_t root) {
         uint32_t slots[WideNode::kWidth];
-        uint32_t used = 0;
-        const BvhNode& r = binary_.nodes[root];
-        if (r.is_leaf()) {
-            slots[used++] = root;
-        } else {
-            distribute(r.index, plan_[root].own_split, slots, used);
-            distribute(r.index + 1, WideNode::kWidth - plan_[root].own_split, slots, used);
-        }
+        const uint32_t used = slots_of(root, slots);
         // Leaves in the low slots, where any-hit rays start; a node's leaves and its child
         // nodes each lie together in memory, which the hardware prefetcher likes.
         std::stable_partition(slots, slots + used, [&](uint32_t k) { return binary_.nodes[k].is_leaf(); });
@@ -58,11 +51,7 @@ public:
     /// does, without writing, so that the nodes are allocated once at their final size.
     [[nodiscard]] size_t count_nodes(uint32_t root) const {
         uint32_t slots[WideNode::kWidth];
-        uint32_t used = 0;
-        const BvhNode& r = binary_.nodes[root];
-        if (r.is_leaf()) return 1;
-        distribute(r.index, plan_[root].own_split, slots, used);
-        distribute(r.index + 1, WideNode::kWidth - plan_[root].own_split, slots, used);
+        const uint32_t used = slots_of(root, slots);
         size_t count = 1;
         for (uint32_t i = 0; i < used; ++i)
             if (!binary_.nodes[slots[i]].is_leaf()) count += count_nodes(slots[i]);
@@ -126,6 +115,20 @@ private:
         uint8_t own_split = 0;
     };
 
+    /// The binary nodes that become the children of the wide node made from binary node
+    /// `root`, as the plan distributes them (a leaf root is its own only child); their count.
+    uint32_t slots_of(uint32_t root, uint32_t* slots) const {
+        uint32_t used = 0;
+        const BvhNode& r = binary_.nodes[root];
+        if (r.is_leaf()) {
+            slots[used++] = root;
+        } else {
+            distribute(r.index, plan_[root].own_split, slots, used);
+            distribute(r.index + 1, WideNode::kWidth - plan_[root].own_split, slots, used);
+        }
+        return used;
+    }
+
     /// Appends the slots binary node `k` takes when given `count` of them by the plan.
     void distribute(uint32_t k, uint32_t count, uint32_t* slots, uint32_t& used) const {
         const BvhNode& node = binary_.nodes[k];
@@ -181,8 +184,9 @@ void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildCon
     leaves_.reserve(binary_leaves);
     Collapser collapser(binary, nodes_, leaves_);
     collapser.plan();
-    // Reserved at the exact count: growing and then shrinking to fit copied the nodes once
-    // more and faulted in their pages twice (docs/performance.md, "The build's page faults").
+    // Reserved at the exact count: reserving one node per binary leaf and then shrinking to
+    // fit copied the nodes once more and faulted in their pages twice (docs/performance.md,
+    // "The build's page faults").
     nodes_.reserve(collapser.count_nodes(0));
     nodes_.emplace_back();
     collapser.fill(0, 0);

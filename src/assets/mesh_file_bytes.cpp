@@ -94,7 +94,7 @@ std::vector<std::shared_ptr<const Image>> read_images(ByteReader& r) {
         image->width = r.value<int>();
         image->height = r.value<int>();
         image->channels = r.value<int>();
-        image->pixels = r.array<float, LargeArrayAllocator<float>>();
+        r.array(image->pixels);
         if (image->width <= 0 || image->height <= 0 || image->channels <= 0 ||
             image->pixels.size() !=
                 std::size_t(image->width) * std::size_t(image->height) * std::size_t(image->channels))
@@ -173,16 +173,16 @@ MeshFile mesh_file_from_bytes(std::string_view bytes, const std::string& context
             }
             std::string name = r.text();
             MeshData data;
-            data.positions = r.array<Vec3, LargeArrayAllocator<Vec3>>();
-            data.indices = r.array<uint32_t, LargeArrayAllocator<uint32_t>>();
-            data.normals = r.array<Vec3, LargeArrayAllocator<Vec3>>();
-            data.uvs = r.array<Vec2, LargeArrayAllocator<Vec2>>();
-            data.colors = r.array<Color, LargeArrayAllocator<Color>>();
-            data.vertex_materials = r.array<uint32_t, LargeArrayAllocator<uint32_t>>();
-            data.tangents = r.array<Tangent, LargeArrayAllocator<Tangent>>();
+            r.array(data.positions);
+            r.array(data.indices);
+            r.array(data.normals);
+            r.array(data.uvs);
+            r.array(data.colors);
+            r.array(data.vertex_materials);
+            r.array(data.tangents);
             file.meshes.push_back(std::make_shared<TriangleMesh>(std::move(data), std::move(name)));
         }
-        file.mesh_materials = r.array<uint32_t>();
+        r.array(file.mesh_materials);
         for (uint64_t i = 0, n = r.value<uint64_t>(); i < n; ++i) {
             MeshPlacement p;
             p.mesh = r.value<uint32_t>();

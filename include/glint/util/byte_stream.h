@@ -72,12 +72,13 @@ public:
         at_ += n;
         return s;
     }
-    template <class T, class Allocator = std::allocator<T>>
-    [[nodiscard]] std::vector<T, Allocator> array() {
+    /// What ByteWriter::array wrote, into `items` (replacing what it held), so that it lands
+    /// in the destination's own storage, whatever its allocator.
+    template <class T, class Allocator>
+    void array(std::vector<T, Allocator>& items) {
         static_assert(std::is_trivially_copyable_v<T>);
-        std::vector<T, Allocator> items(count<uint64_t>(sizeof(T)));
+        items.resize(count<uint64_t>(sizeof(T)));
         raw(items.data(), items.size() * sizeof(T));
-        return items;
     }
     void raw(void* out, std::size_t size) {
         need(size);
