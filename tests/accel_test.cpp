@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -104,6 +105,15 @@ MeshData icosphere(int levels) {
         m.indices = std::move(next);
     }
     return m;
+}
+
+// In every clone, a tree big enough for the collapse's parallel tasks (2^14 binary nodes or
+// more), whose subtrees are written into ranges computed ahead: a wrong range would lose or
+// overwrite nodes and leaves.
+TEST(Build, ATreeCollapsedInParallelAgreesWithBruteForce) {
+    TriangleMesh mesh(icosphere(6));  // 81,920 triangles
+    mesh.prepare();
+    expect_agreement(mesh, random_rays(mesh.bounds(), 300, 11));
 }
 
 TEST(Watertight, RaysThroughEdgesAndVerticesOfAClosedMeshNeverEscape) {
@@ -346,7 +356,9 @@ TEST(ShapeAgnostic, TwoHitChildrenAreVisitedByEntryDistance) {
 }
 
 TEST(Build, TheTreeDoesNotDependOnTheThreadCount) {
-    const MeshData sphere = icosphere(5);  // 20,480 triangles: big enough for parallel tasks
+    // 81,920 triangles: big enough for the binary build's parallel tasks and for the
+    // collapse's (a tree of 2^14 binary nodes or more).
+    const MeshData sphere = icosphere(6);
     auto build_with = [&](int threads) {
         TriangleBvh bvh;
         tbb::task_arena(threads).execute([&] { bvh.build(sphere.positions, sphere.indices); });
@@ -354,10 +366,14 @@ TEST(Build, TheTreeDoesNotDependOnTheThreadCount) {
     };
     const TriangleBvh one = build_with(1), two = build_with(2);
     ASSERT_EQ(one.blocks().size(), two.blocks().size());
-    ASSERT_EQ(one.wide_bvh().nodes().size(), two.wide_bvh().nodes().size());
     for (size_t i = 0; i < one.blocks().size(); ++i)
         for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane)
             ASSERT_EQ(one.blocks()[i].triangle[lane], two.blocks()[i].triangle[lane]) << "block " << i;
+    // Every byte of every wide node: boxes, children (their numbering is the layout) and
+    // child orders.
+    const std::span<const WideNode> a = one.wide_bvh().nodes(), b = two.wide_bvh().nodes();
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) ASSERT_EQ(std::memcmp(&a[i], &b[i], sizeof(WideNode)), 0) << "node " << i;
 }
 
 }  // namespace

@@ -1,5 +1,8 @@
 #include "glint/accel/wide_bvh.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -7,101 +10,45 @@ namespace glint {
 
 namespace {
 
-/// Turns binary nodes into wide ones, depth first.
+/// Binary trees of at least this many nodes are planned and collapsed with their subtrees
+/// in parallel, down to these depths (binary levels for the plan, wide levels for the
+/// rest): enough tasks for a few cores, and none for the small trees of a scene's many
+/// small meshes.
+constexpr size_t kParallelCollapseNodes = size_t(1) << 14;
+constexpr int kParallelPlanDepth = 8;
+constexpr int kParallelFillDepth = 3;
+
+/// Runs body(i) for each i < count, in parallel when asked.
+template <typename Body>
+void for_each_index(bool parallel, uint32_t count, const Body& body) {
+    if (parallel)
+        tbb::parallel_for(0u, count, [&](uint32_t i) { body(i); });
+    else
+        for (uint32_t i = 0; i < count; ++i) body(i);
+}
+
+/// Turns binary nodes into wide ones: the plan, then the size of each wide subtree, then
+/// the nodes, each subtree written into the nodes and leaves that a serial depth-first fill
+/// would give it (a node's children together after it, then their subtrees in slot
+/// order), so that the tree is the same whatever the number of threads.
 class Collapser {
 public:
-    Collapser(const BinaryBvh& binary, std::vector<WideNode>& nodes, LargeArray<WideLeaf>& leaves)
-        : binary_(binary), nodes_(nodes), leaves_(leaves) {}
+    Collapser(const BinaryBvh& binary, WideNodeArray& nodes, LargeArray<WideLeaf>& leaves)
+        : binary_(binary), nodes_(nodes), leaves_(leaves), parallel_(binary.nodes.size() >= kParallelCollapseNodes) {}
 
-    /// Fills wide node `index` with the subtree of binary node `root`.
-    void fill(uint32_t index, uint32_t root) {
-        uint32_t slots[WideNode::kWidth];
-        const uint32_t used = slots_of(root, slots);
-        // Leaves in the low slots, where any-hit rays start; a node's leaves and its child
-        // nodes each lie together in memory, which the hardware prefetcher likes.
-        std::stable_partition(slots, slots + used, [&](uint32_t k) { return binary_.nodes[k].is_leaf(); });
-        uint32_t inner = 0;
-        for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
-            const Bounds3 b = i < used ? binary_.nodes[slots[i]].bounds : Bounds3{};
-            for (int a = 0; a < 3; ++a) {
-                nodes_[index].planes[2 * a][i] = b.lo[a];
-                nodes_[index].planes[2 * a + 1][i] = b.hi[a];
-            }
-            nodes_[index].child[i] = WideNode::kLeafBit;  // unused slots: never entered
-            if (i >= used) continue;
-            const BvhNode& n = binary_.nodes[slots[i]];
-            if (n.is_leaf()) {
-                nodes_[index].child[i] = WideNode::kLeafBit | static_cast<uint32_t>(leaves_.size());
-                leaves_.push_back({n.index, n.count});
-            } else {
-                ++inner;
-            }
-        }
-        set_child_order(nodes_[index], slots, used);
-        const auto first_child = static_cast<uint32_t>(nodes_.size());
-        nodes_.resize(nodes_.size() + inner);
-        uint32_t next = first_child;
-        for (uint32_t i = 0; i < used; ++i)
-            if (!binary_.nodes[slots[i]].is_leaf()) nodes_[index].child[i] = next++;
-        for (uint32_t i = 0; i < used; ++i)
-            if (!binary_.nodes[slots[i]].is_leaf()) fill(nodes_[index].child[i], slots[i]);
-    }
-
-    /// The number of wide nodes fill(·, root) makes: the planned collapse read off as fill
-    /// does, without writing, so that the nodes are allocated once at their final size.
-    [[nodiscard]] size_t count_nodes(uint32_t root) const {
-        uint32_t slots[WideNode::kWidth];
-        const uint32_t used = slots_of(root, slots);
-        size_t count = 1;
-        for (uint32_t i = 0; i < used; ++i)
-            if (!binary_.nodes[slots[i]].is_leaf()) count += count_nodes(slots[i]);
-        return count;
-    }
-
-    /// Plans the collapse that minimises the summed surface area of the wide nodes (the
-    /// expected number of node visits; the leaves are the binary tree's either way): the
-    /// dynamic program of Ylitie, Karras and Laine 2017 ("Efficient Incoherent Ray
-    /// Traversal on GPUs Through Compressed Wide BVHs", §3), without its leaf merging.
-    void plan() {
-        const size_t n = binary_.nodes.size();
-        plan_.assign(n, {});
-        // build_binary_bvh numbers children after their parent, so walking backwards meets
-        // them first.
-        for (size_t k = n; k-- > 0;) {
-            const BvhNode& node = binary_.nodes[k];
-            Plan& p = plan_[k];
-            if (node.is_leaf()) continue;  // one slot, cost 0 (leaves are the same in any collapse)
-            const Plan& a = plan_[node.index];
-            const Plan& b = plan_[node.index + 1];
-            // best[j - 1]: the two subtrees in at most j slots, each taking at least one (so
-            // at most seven).
-            float best[WideNode::kWidth];
-            uint8_t split[WideNode::kWidth];
-            for (uint32_t j = 1; j <= WideNode::kWidth; ++j) {
-                // From two slots on, the first subtree in one slot is where the search starts,
-                // so that a split is chosen even when no cost compares (NaN bounds of a
-                // hostile mesh: the split stayed 0 and distribute() indexed split[-1]).
-                best[j - 1] = j >= 2 ? a.cost[0] + b.cost[j - 2] : std::numeric_limits<float>::infinity();
-                split[j - 1] = j >= 2 ? 1 : 0;
-                for (uint32_t left = 2; left < j; ++left) {
-                    const float c = a.cost[left - 1] + b.cost[j - left - 1];
-                    if (c < best[j - 1]) {
-                        best[j - 1] = c;
-                        split[j - 1] = static_cast<uint8_t>(left);
-                    }
-                }
-            }
-            // In one slot the node is a wide node of its own: its area, plus its subtrees
-            // spread over eight slots.
-            p.own_split = split[WideNode::kWidth - 1];
-            p.cost[0] = node.bounds.half_area() + best[WideNode::kWidth - 1];
-            p.split[0] = 0;
-            for (uint32_t j = 2; j < WideNode::kWidth; ++j) {
-                const bool open = best[j - 1] < p.cost[j - 2];
-                p.cost[j - 1] = open ? best[j - 1] : p.cost[j - 2];
-                p.split[j - 1] = open ? split[j - 1] : p.split[j - 2];
-            }
-        }
+    void collapse() {
+        plan_.resize(binary_.nodes.size());
+        plan_subtree(0, 0);
+        sizes_.resize(binary_.nodes.size());
+        const Size total = measure(0, 0);
+        // Sized once, at the final count: reserving one node per binary leaf and shrinking
+        // to fit copied the nodes again and faulted in their pages twice (docs/performance.md,
+        // "The build's page faults"). The nodes are left unwritten (DefaultInitAllocator)
+        // for fill(), which writes every byte of them, so their pages fault in on every
+        // thread.
+        nodes_.resize(total.nodes);
+        leaves_.resize(total.leaves);
+        fill(0, 0, Size{1, 0}, 0);
     }
 
 private:
@@ -109,11 +56,125 @@ private:
     /// parent leaves at least one of its eight to the other subtree): split[j] slots for its
     /// first child and the rest for the second, or 0 to keep it in one slot. own_split is
     /// the first child's share of the eight slots when the node is a wide node of its own.
+    /// A leaf's plan stays zero: one slot, cost 0 (leaves are the same in any collapse).
     struct Plan {
         float cost[WideNode::kWidth - 1] = {};
         uint8_t split[WideNode::kWidth - 1] = {};
         uint8_t own_split = 0;
     };
+
+    /// Wide nodes and leaves: a subtree's counts, or the first of each a subtree may use.
+    struct Size {
+        uint32_t nodes = 0;
+        uint32_t leaves = 0;
+    };
+
+    /// Plans the collapse that minimises the summed surface area of the wide nodes (the
+    /// expected number of node visits; the leaves are the binary tree's either way): the
+    /// dynamic program of Ylitie, Karras and Laine 2017 ("Efficient Incoherent Ray
+    /// Traversal on GPUs Through Compressed Wide BVHs", §3), without its leaf merging;
+    /// children before parents.
+    void plan_subtree(uint32_t k, int depth) {
+        const BvhNode& node = binary_.nodes[k];
+        if (node.is_leaf()) return;
+        if (parallel_ && depth < kParallelPlanDepth) {
+            tbb::parallel_invoke([&] { plan_subtree(node.index, depth + 1); },
+                                 [&] { plan_subtree(node.index + 1, depth + 1); });
+        } else {
+            plan_subtree(node.index, depth + 1);
+            plan_subtree(node.index + 1, depth + 1);
+        }
+        plan_node(k);
+    }
+
+    /// The plan of inner binary node `k`, from its children's.
+    void plan_node(uint32_t k) {
+        const BvhNode& node = binary_.nodes[k];
+        Plan& p = plan_[k];
+        const Plan& a = plan_[node.index];
+        const Plan& b = plan_[node.index + 1];
+        // best[j - 1]: the two subtrees in at most j slots, each taking at least one (so
+        // at most seven).
+        float best[WideNode::kWidth];
+        uint8_t split[WideNode::kWidth];
+        for (uint32_t j = 1; j <= WideNode::kWidth; ++j) {
+            // From two slots on, the first subtree in one slot is where the search starts,
+            // so that a split is chosen even when no cost compares (NaN bounds of a
+            // hostile mesh: the split stayed 0 and distribute() indexed split[-1]).
+            best[j - 1] = j >= 2 ? a.cost[0] + b.cost[j - 2] : std::numeric_limits<float>::infinity();
+            split[j - 1] = j >= 2 ? 1 : 0;
+            for (uint32_t left = 2; left < j; ++left) {
+                const float c = a.cost[left - 1] + b.cost[j - left - 1];
+                if (c < best[j - 1]) {
+                    best[j - 1] = c;
+                    split[j - 1] = static_cast<uint8_t>(left);
+                }
+            }
+        }
+        // In one slot the node is a wide node of its own: its area, plus its subtrees
+        // spread over eight slots.
+        p.own_split = split[WideNode::kWidth - 1];
+        p.cost[0] = node.bounds.half_area() + best[WideNode::kWidth - 1];
+        p.split[0] = 0;
+        for (uint32_t j = 2; j < WideNode::kWidth; ++j) {
+            const bool open = best[j - 1] < p.cost[j - 2];
+            p.cost[j - 1] = open ? best[j - 1] : p.cost[j - 2];
+            p.split[j - 1] = open ? split[j - 1] : p.split[j - 2];
+        }
+    }
+
+    /// The size of the wide subtree that fill(·, root) makes, recorded for each of its nodes.
+    Size measure(uint32_t root, int depth) {
+        uint32_t slots[WideNode::kWidth];
+        const uint32_t used = slots_of(root, slots);
+        Size child[WideNode::kWidth];
+        for_each_index(parallel_ && depth < kParallelFillDepth, used, [&](uint32_t i) {
+            child[i] = binary_.nodes[slots[i]].is_leaf() ? Size{0, 1} : measure(slots[i], depth + 1);
+        });
+        Size size{1, 0};
+        for (uint32_t i = 0; i < used; ++i) {
+            size.nodes += child[i].nodes;
+            size.leaves += child[i].leaves;
+        }
+        sizes_[root] = size;
+        return size;
+    }
+
+    /// Fills wide node `index` with the subtree of binary node `root`; its children and
+    /// their subtrees take the nodes and leaves from `next` on.
+    void fill(uint32_t index, uint32_t root, Size next, int depth) {
+        uint32_t slots[WideNode::kWidth];
+        const uint32_t used = slots_of(root, slots);
+        leaves_first(slots, used);
+        uint32_t inner = 0;
+        for (uint32_t i = 0; i < used; ++i) inner += binary_.nodes[slots[i]].is_leaf() ? 0 : 1;
+        Size below{next.nodes + inner, next.leaves + (used - inner)};  // where the grandchildren go
+        Size child_next[WideNode::kWidth];
+        WideNode& node = nodes_[index];
+        for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
+            const Bounds3 b = i < used ? binary_.nodes[slots[i]].bounds : Bounds3{};
+            for (int a = 0; a < 3; ++a) {
+                node.planes[2 * a][i] = b.lo[a];
+                node.planes[2 * a + 1][i] = b.hi[a];
+            }
+            node.child[i] = WideNode::kLeafBit;  // unused slots: never entered
+            if (i >= used) continue;
+            const BvhNode& n = binary_.nodes[slots[i]];
+            if (n.is_leaf()) {
+                node.child[i] = WideNode::kLeafBit | next.leaves;
+                leaves_[next.leaves++] = {n.index, n.count};
+            } else {
+                node.child[i] = next.nodes++;
+                child_next[i] = below;
+                below.nodes += sizes_[slots[i]].nodes - 1;
+                below.leaves += sizes_[slots[i]].leaves;
+            }
+        }
+        set_child_order(node, slots, used);
+        for_each_index(parallel_ && depth < kParallelFillDepth, used, [&](uint32_t i) {
+            if (!binary_.nodes[slots[i]].is_leaf()) fill(node.child[i], slots[i], child_next[i], depth + 1);
+        });
+    }
 
     /// The binary nodes that become the children of the wide node made from binary node
     /// `root`, as the plan distributes them (a leaf root is its own only child); their count.
@@ -127,6 +188,21 @@ private:
             distribute(r.index + 1, WideNode::kWidth - plan_[root].own_split, slots, used);
         }
         return used;
+    }
+
+    /// Leaves in the low slots, where any-hit rays start; a node's leaves and its child nodes
+    /// each lie together in memory, which the hardware prefetcher likes. A stable partition
+    /// by hand: std::stable_partition takes a heap buffer on every call.
+    void leaves_first(uint32_t* slots, uint32_t used) const {
+        uint32_t inner[WideNode::kWidth];
+        uint32_t leaves = 0, inners = 0;
+        for (uint32_t i = 0; i < used; ++i) {
+            if (binary_.nodes[slots[i]].is_leaf())
+                slots[leaves++] = slots[i];
+            else
+                inner[inners++] = slots[i];
+        }
+        std::copy(inner, inner + inners, slots + leaves);
     }
 
     /// Appends the slots binary node `k` takes when given `count` of them by the plan.
@@ -157,16 +233,21 @@ private:
                 key[i] = 0.0f;
                 for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre[a] : centre[a];
             }
-            std::stable_sort(sorted, sorted + WideNode::kWidth,
-                             [&](uint32_t a, uint32_t b) { return key[a] < key[b]; });
+            // Insertion sort, stable: std::stable_sort took a heap buffer for each of the
+            // eight sorts of every node, a fifth of the collapse's time.
+            for (uint32_t i = 1; i < WideNode::kWidth; ++i)
+                for (uint32_t k = i; k > 0 && key[sorted[k]] < key[sorted[k - 1]]; --k)
+                    std::swap(sorted[k], sorted[k - 1]);
             for (uint32_t k = 0; k < WideNode::kWidth; ++k) node.order[k] |= sorted[k] << (3 * octant);
         }
     }
 
     const BinaryBvh& binary_;
-    std::vector<WideNode>& nodes_;
+    WideNodeArray& nodes_;
     LargeArray<WideLeaf>& leaves_;
-    LargeArray<Plan> plan_;
+    const bool parallel_;
+    LargeArray<Plan> plan_;   // per binary node
+    LargeArray<Size> sizes_;  // per binary node that becomes a wide node
 };
 
 }  // namespace
@@ -179,17 +260,7 @@ void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildCon
     BinaryBvh binary = build_binary_bvh(primitive_bounds, config);
     if (binary.nodes.empty()) return;
     bounds_ = binary.nodes[0].bounds;
-    size_t binary_leaves = 0;
-    for (const BvhNode& n : binary.nodes) binary_leaves += n.is_leaf() ? 1 : 0;
-    leaves_.reserve(binary_leaves);
-    Collapser collapser(binary, nodes_, leaves_);
-    collapser.plan();
-    // Reserved at the exact count: reserving one node per binary leaf and then shrinking to
-    // fit copied the nodes once more and faulted in their pages twice (docs/performance.md,
-    // "The build's page faults").
-    nodes_.reserve(collapser.count_nodes(0));
-    nodes_.emplace_back();
-    collapser.fill(0, 0);
+    Collapser(binary, nodes_, leaves_).collapse();
     order_ = std::move(binary.order);
 }
 

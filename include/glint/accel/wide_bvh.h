@@ -15,6 +15,7 @@
 #include "glint/accel/traversal_count.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
+#include "glint/util/default_init_allocator.h"
 #include "glint/util/large_array.h"
 
 #include <bit>
@@ -47,6 +48,10 @@ struct alignas(32) WideNode {
     uint32_t order[kWidth];
 };
 static_assert(sizeof(WideNode) == 256);
+
+/// A WideBvh's nodes: sizing the array leaves them unwritten for the collapse, which writes
+/// every byte of every node, in parallel.
+using WideNodeArray = std::vector<WideNode, DefaultInitAllocator<WideNode>>;
 
 /// Entries a traversal stack of a WideBvh needs: each wide level leaves at most seven
 /// children behind, a wide tree is no deeper than the binary one it collapses, and a
@@ -121,7 +126,7 @@ private:
     // The nodes stay in ordinary memory: in huge pages the dragon's camera rays and packets
     // ran slower in the session measured (docs/performance.md, "The build's page faults"),
     // while TriangleBvh's blocks, three quarters of the bytes, gain from them.
-    std::vector<WideNode> nodes_;
+    WideNodeArray nodes_;
     LargeArray<WideLeaf> leaves_;
     LargeArray<uint32_t> order_;
     Bounds3 bounds_;
