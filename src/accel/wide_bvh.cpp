@@ -43,7 +43,7 @@ public:
         const Size total = measure(0, 0);
         // Sized once, at the final count: reserving one node per binary leaf and shrinking
         // to fit copied the nodes again and faulted in their pages twice (docs/performance.md,
-        // "The build's page faults"). The nodes are left unwritten (DefaultInitAllocator)
+        // "The build's page faults"). The nodes are left unwritten (UninitializedArray)
         // for fill(), which writes every byte of them, so their pages fault in on every
         // thread.
         nodes_.resize(total.nodes);

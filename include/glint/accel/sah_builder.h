@@ -6,6 +6,7 @@
 
 #include "glint/math/bounds3.h"
 #include "glint/util/large_array.h"
+#include "glint/util/uninitialized_allocator.h"
 
 #include <cstdint>
 #include <span>
@@ -37,7 +38,7 @@ static_assert(sizeof(BvhNode) == 32);
 /// A binary BVH: node 0 is the root (no nodes when there is nothing to hit), leaves index
 /// `order`, which maps leaf entries to the caller's primitive indices.
 struct BinaryBvh {
-    LargeArray<BvhNode> nodes;
+    UninitializedLargeArray<BvhNode> nodes;
     LargeArray<uint32_t> order;
 };
 

@@ -15,8 +15,8 @@
 #include "glint/accel/traversal_count.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
-#include "glint/util/default_init_allocator.h"
 #include "glint/util/large_array.h"
+#include "glint/util/uninitialized_allocator.h"
 
 #include <bit>
 #include <cmath>
@@ -51,7 +51,7 @@ static_assert(sizeof(WideNode) == 256);
 
 /// A WideBvh's nodes: sizing the array leaves them unwritten for the collapse, which writes
 /// every byte of every node, in parallel.
-using WideNodeArray = std::vector<WideNode, DefaultInitAllocator<WideNode>>;
+using WideNodeArray = UninitializedArray<WideNode>;
 
 /// Entries a traversal stack of a WideBvh needs: each wide level leaves at most seven
 /// children behind, a wide tree is no deeper than the binary one it collapses, and a
