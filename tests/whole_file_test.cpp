@@ -41,7 +41,7 @@ TEST_F(WholeFile, AFolderOrAMissingFileIsNamedByTheSceneLoaderAndTheCheckpoint) 
             EXPECT_EQ(std::string(e.what()), path.string() + ": no such scene file");
         }
         try {
-            (void)render_fingerprint(path, RenderSettings{}, Camera{});
+            (void)scene_file_fingerprint(path);
             ADD_FAILURE() << path << " fingerprinted";
         } catch (const CheckpointError& e) {
             EXPECT_EQ(std::string(e.what()), path.string() + ": cannot be read");

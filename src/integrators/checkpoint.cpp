@@ -45,15 +45,14 @@ std::string file_bytes(const std::filesystem::path& path) {
 
 }  // namespace
 
-RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, const RenderSettings& s,
-                                     const Camera& camera) {
-    RenderFingerprint f;
-    if (scene_file.empty()) {
-        f.emplace_back("scene", "the built-in scene");
-    } else {
-        f.emplace_back("scene", scene_file.filename().string());
-        f.emplace_back("scene content", fmt::format("{:016x}", fnv1a(file_bytes(scene_file))));
-    }
+RenderFingerprint scene_file_fingerprint(const std::filesystem::path& scene_file) {
+    if (scene_file.empty()) return {{"scene", "the built-in scene"}};
+    return {{"scene", scene_file.filename().string()},
+            {"scene content", fmt::format("{:016x}", fnv1a(file_bytes(scene_file)))}};
+}
+
+RenderFingerprint render_fingerprint(RenderFingerprint scene, const RenderSettings& s, const Camera& camera) {
+    RenderFingerprint f = std::move(scene);
     // Nine significant digits: a float's value exactly, so any change of the camera shows.
     const Vec3 &e = camera.eye(), &d = camera.forward(), &u = camera.up();
     f.emplace_back(

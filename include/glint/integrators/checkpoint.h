@@ -29,10 +29,16 @@ public:
 /// only by a render with the same fingerprint.
 using RenderFingerprint = NamedValues;
 
-/// `scene_file` empty stands for the built-in scene. `camera` is the one rendered through:
-/// command-line options (--aperture, --focus, --shutter, --time, --camera) change it
-/// without changing the file. Throws CheckpointError if the file cannot be read.
-[[nodiscard]] RenderFingerprint render_fingerprint(const std::filesystem::path& scene_file, const RenderSettings& s,
+/// The scene file's part of a fingerprint: its name and a hash of its bytes; `scene_file`
+/// empty stands for the built-in scene. A large file (a mesh given as the scene) takes tens
+/// of milliseconds to read and hash, so the render command does it on a thread of its own
+/// while the scene loads. Throws CheckpointError if the file cannot be read.
+[[nodiscard]] RenderFingerprint scene_file_fingerprint(const std::filesystem::path& scene_file);
+
+/// `scene` from scene_file_fingerprint, followed by the settings. `camera` is the one
+/// rendered through: command-line options (--aperture, --focus, --shutter, --time,
+/// --camera) change it without changing the file.
+[[nodiscard]] RenderFingerprint render_fingerprint(RenderFingerprint scene, const RenderSettings& s,
                                                    const Camera& camera);
 
 /// Where the checkpoint of the image `output` lives: beside it, `<output>.checkpoint`.
