@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""Compare builds of Glint on a shared or noisy machine by alternating them run by run, so
+that load from other processes falls on every build alike (docs/performance.md uses it).
+
+    bench/alternate.py process RUNS 'COMMAND with {bin}' BIN [BIN ...]
+        Whole-process wall time of COMMAND, {bin} replaced by each binary in turn; prints
+        min and median per binary. Example:
+        bench/alternate.py process 9 '{bin} render mesh.ply -o /tmp/x.png -q --width 1 --height 1' \\
+            /tmp/glint-before build/glint
+
+    bench/alternate.py build RUNS MESH THREADS GLINT_BENCH [GLINT_BENCH ...]
+        Glint's BVH build time as glint-bench reports it (--rays primary --reps 3 --json, the
+        median of its three builds per run); prints min and median of the runs per binary.
+"""
+import json
+import statistics
+import subprocess
+import sys
+import time
+
+
+def process_times(runs, command, binaries):
+    times = {b: [] for b in binaries}
+    for _ in range(runs):
+        for b in binaries:
+            start = time.perf_counter()
+            subprocess.run(command.format(bin=b), shell=True, check=True, stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL)
+            times[b].append(1000.0 * (time.perf_counter() - start))
+    return times
+
+
+def build_times(runs, mesh, threads, binaries):
+    times = {b: [] for b in binaries}
+    for _ in range(runs):
+        for b in binaries:
+            out = subprocess.run([b, "--mesh", mesh, "--rays", "primary", "--threads", threads, "--reps", "3",
+                                  "--json"], capture_output=True, text=True, check=True).stdout
+            times[b] += [r["glint_ms"] for r in json.loads(out) if r["rays"] == "build"]
+    return times
+
+
+def main():
+    args = sys.argv[1:]
+    if len(args) >= 4 and args[0] == "process":
+        times = process_times(int(args[1]), args[2], args[3:])
+    elif len(args) >= 5 and args[0] == "build":
+        times = build_times(int(args[1]), args[2], args[3], args[4:])
+    else:
+        sys.exit(__doc__)
+    for binary, t in times.items():
+        print(f"{binary}: min {min(t):.1f} ms, median {statistics.median(t):.1f} ms ({len(t)} runs)")
+
+
+if __name__ == "__main__":
+    main()
