@@ -23,8 +23,7 @@ void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_
     wide_.build(boxes, config);
     const std::span<const WideLeaf> leaves = wide_.leaves();
     const std::span<const uint32_t> order = wide_.primitive_order();
-    // Left unwritten until the loop below writes every lane of every block, on every thread.
-    blocks_.clear();
+    // Left unwritten: the loop below writes every lane of every block, on every thread.
     blocks_.resize(leaves.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size(), 1u << 12), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t l = r.begin(); l < r.end(); ++l) {
