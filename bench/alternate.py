@@ -11,6 +11,13 @@ that load from other processes falls on every build alike (docs/performance.md u
     bench/alternate.py build RUNS MESH THREADS GLINT_BENCH [GLINT_BENCH ...]
         Glint's BVH build time as glint-bench reports it (--rays primary --reps 3 --json, the
         median of its three builds per run); prints min and median of the runs per binary.
+
+    bench/alternate.py trace RUNS RAYS THREADS GLINT_BENCH [GLINT_BENCH ...] [-- MESH ...]
+        Tracing throughput as glint-bench reports it (--reps 3 --json), RAYS and THREADS
+        comma-separated (incoherent,primary and 1,2); prints, per mesh, ray set and thread
+        count, each binary's median Mrays/s over the runs and its median ratio to Embree in
+        the same run, which cancels most of a shared machine's drift. Without meshes,
+        glint-bench's default ones.
 """
 import json
 import statistics
@@ -40,12 +47,39 @@ def build_times(runs, mesh, threads, binaries):
     return times
 
 
+def trace_rates(runs, rays, threads, binaries, meshes):
+    rates = {}
+    for _ in range(runs):
+        for b in binaries:
+            command = [b, "--reps", "3", "--json"]
+            command += [a for r in rays.split(",") for a in ("--rays", r)]
+            command += [a for t in threads.split(",") for a in ("--threads", t)]
+            command += [a for m in meshes for a in ("--mesh", m)]
+            records = json.loads(subprocess.run(command, capture_output=True, text=True, check=True).stdout)
+            for r in records:
+                if r["rays"] != "build":
+                    cell = rates.setdefault((r["mesh"], r["rays"], r["threads"]), {b: [] for b in binaries})
+                    cell[b].append((r["glint_mrays"], r["glint_mrays"] / r["embree_mrays"]))
+    return rates
+
+
+def print_rates(rates):
+    for (mesh, rays, threads), per_binary in rates.items():
+        cells = [f"{b}: {statistics.median(m for m, _ in v):.2f} Mrays/s, {statistics.median(q for _, q in v):.3f} "
+                 f"of Embree" for b, v in per_binary.items()]
+        print(f"{mesh} {rays} {threads} thr | " + " | ".join(cells))
+
+
 def main():
     args = sys.argv[1:]
     if len(args) >= 4 and args[0] == "process":
         times = process_times(int(args[1]), args[2], args[3:])
     elif len(args) >= 5 and args[0] == "build":
         times = build_times(int(args[1]), args[2], args[3], args[4:])
+    elif len(args) >= 5 and args[0] == "trace":
+        binaries, meshes = (args[4:args.index("--")], args[args.index("--") + 1:]) if "--" in args else (args[4:], [])
+        print_rates(trace_rates(int(args[1]), args[2], args[3], binaries, meshes))
+        return
     else:
         sys.exit(__doc__)
     for binary, t in times.items():
