@@ -86,7 +86,7 @@ struct PacketWatertightRay {
 /// (rays) that hit within (tmin, tmax) and, through the out-parameters, t and the
 /// barycentrics of vertices 1 and 2 for them. Inlined into the loop over a block's
 /// triangles: called, its eight-lane results came back through memory and the packet's
-/// constants were read through pointers (packets +2 to +17 %, docs/performance.md).
+/// constants were read through pointers (packets +2 to +16 %, docs/performance.md).
 template <bool SharedAxes>
 [[gnu::always_inline]] inline uint32_t intersect_triangle_packet(const TriangleBlock& block, uint32_t triangle,
                                                                  const PacketWatertightRay& r, __m256 tmax,
