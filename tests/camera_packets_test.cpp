@@ -1,6 +1,7 @@
 // The render traces camera rays eight pixels at a time as packets (Integrator::
 // takes_first_hits); the images must be the ones tracing them one by one makes, bit for
-// bit, for every scene in scenes/ (at 64×48), AOVs included.
+// bit, for every scene in scenes/ (at 64×48), AOVs included, with and without adaptive
+// sampling.
 
 #include "glint/image/aov_film.h"
 #include "glint/integrators/integrator_registry.h"
@@ -48,24 +49,46 @@ int differing_pixels(const Image& a, const Image& b) {
     return differ;
 }
 
-class CameraPackets : public testing::TestWithParam<std::string> {};
-
-TEST_P(CameraPackets, RenderTheImageOfSingleRays) {
-    LoadedScene loaded = load_toml_scene(glint_test::kScenesDir / (GetParam() + ".toml"));
+/// Pixels in which the render of scene `name` with `settings` changed by `change` differs,
+/// camera rays in packets against one by one (the radiance and every AOV channel).
+template <class Change>
+int pixels_packets_change(const std::string& name, const Change& change, bool& takes_packets) {
+    LoadedScene loaded = load_toml_scene(glint_test::kScenesDir / (name + ".toml"));
     loaded.settings.width = kPacketsWidth;
     loaded.settings.height = kPacketsHeight;
+    change(loaded.settings);
     const RenderScene scene(std::move(loaded.scene));
     const std::unique_ptr<Integrator> integrator = make_integrator(loaded.settings);
+    takes_packets = integrator->takes_first_hits();
     const OneRayAtATime one_by_one(*integrator);
     const std::vector<Aov> aovs = {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Spp, Aov::Variance};
     Film packets(kPacketsWidth, kPacketsHeight), singles(kPacketsWidth, kPacketsHeight);
     AovFilm packet_aovs(kPacketsWidth, kPacketsHeight, aovs), single_aovs(kPacketsWidth, kPacketsHeight, aovs);
     integrator->render(scene, loaded.settings, packets, {}, nullptr, nullptr, &packet_aovs);
     one_by_one.render(scene, loaded.settings, singles, {}, nullptr, nullptr, &single_aovs);
-    // The radiance and every AOV channel.
-    EXPECT_EQ(differing_pixels(packet_aovs.append_to(packets.to_image()), single_aovs.append_to(singles.to_image())), 0)
-        << "of " << kPacketsWidth * kPacketsHeight
-        << (integrator->takes_first_hits() ? "" : " (this integrator takes no packets)");
+    return differing_pixels(packet_aovs.append_to(packets.to_image()), single_aovs.append_to(singles.to_image()));
+}
+
+class CameraPackets : public testing::TestWithParam<std::string> {};
+
+TEST_P(CameraPackets, RenderTheImageOfSingleRays) {
+    bool takes_packets = false;
+    EXPECT_EQ(pixels_packets_change(
+                  GetParam(), [](RenderSettings&) {}, takes_packets),
+              0)
+        << "of " << kPacketsWidth * kPacketsHeight << (takes_packets ? "" : " (this integrator takes no packets)");
+}
+
+// Adaptive sampling packs the pixels still sampling, wherever they are in the tile, and each
+// must still take its own samples in its own order.
+TEST_P(CameraPackets, RenderTheAdaptiveImageOfSingleRays) {
+    bool takes_packets = false;
+    auto adaptive = [](RenderSettings& settings) {
+        settings.samples_per_axis = 4;
+        settings.adaptive = AdaptiveSampling{.min_spp = 2, .threshold = 0.02f};
+    };
+    EXPECT_EQ(pixels_packets_change(GetParam(), adaptive, takes_packets), 0)
+        << "of " << kPacketsWidth * kPacketsHeight << (takes_packets ? "" : " (this integrator takes no packets)");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, CameraPackets,

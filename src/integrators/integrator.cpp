@@ -50,17 +50,44 @@ void check_adaptive(const RenderSettings& settings) {
         throw std::invalid_argument("adaptive sampling: the minimum samples per pixel must be from 1 to the maximum");
 }
 
-/// Every pixel of the tile `b` takes its first batch of `adaptive.min_spp` samples, in the
-/// progressive order of an n×n grid; `luminance(x, y, index)` takes one and returns its
-/// luminance. The statistics per pixel, row by row.
-template <class Sample>
-std::vector<PixelError> first_batches(const TileGrid::Bounds& b, const AdaptiveSampling& adaptive, uint32_t n,
-                                      const Sample& luminance) {
-    std::vector<PixelError> errors(std::size_t(b.x1 - b.x0) * (b.y1 - b.y0));
+// The tile loops below take their samples through `take(lanes, then)`: it takes the samples
+// `lanes` (at most RayPacket::kSize; as one packet or one by one, as the caller chooses) and
+// hands each one's radiance to `then(x, y, radiance)`.
+
+/// Up to `group` pixels of row y from x on (before x1), each taking sample `index`.
+std::span<const PixelSample> row_lanes(std::array<PixelSample, RayPacket::kSize>& lanes, uint32_t x, uint32_t x1,
+                                       uint32_t y, uint32_t group, uint32_t index) {
+    const uint32_t count = std::min(group, x1 - x);
+    for (uint32_t k = 0; k < count; ++k) lanes[k] = {x + k, y, index};
+    return {lanes.data(), count};
+}
+
+/// Every pixel of the tile `b` takes its n² samples in order, `group` neighbours of a row
+/// together.
+template <class Take>
+void sample_uniformly(const TileGrid::Bounds& b, uint32_t n, uint32_t group, const Take& take) {
+    std::array<PixelSample, RayPacket::kSize> lanes;
     for (uint32_t y = b.y0; y < b.y1; ++y)
-        for (uint32_t x = b.x0; x < b.x1; ++x)
+        for (uint32_t x = b.x0; x < b.x1; x += group)
+            for (uint32_t index = 0; index < n * n; ++index)
+                take(row_lanes(lanes, x, b.x1, y, group, index), [](uint32_t, uint32_t, const Color&) {});
+}
+
+/// Every pixel of the tile `b` takes its first batch of `adaptive.min_spp` samples, in the
+/// progressive order of an n×n grid, `group` neighbours of a row together. The statistics
+/// per pixel, row by row.
+template <class Take>
+std::vector<PixelError> first_batches(const TileGrid::Bounds& b, const AdaptiveSampling& adaptive, uint32_t n,
+                                      uint32_t group, const Take& take) {
+    std::vector<PixelError> errors(std::size_t(b.x1 - b.x0) * (b.y1 - b.y0));
+    std::array<PixelSample, RayPacket::kSize> lanes;
+    for (uint32_t y = b.y0; y < b.y1; ++y)
+        for (uint32_t x = b.x0; x < b.x1; x += group)
             for (uint32_t k = 0; k < adaptive.min_spp; ++k)
-                errors[(y - b.y0) * (b.x1 - b.x0) + (x - b.x0)].add(luminance(x, y, progressive_cell(k, n)));
+                take(row_lanes(lanes, x, b.x1, y, group, progressive_cell(k, n)),
+                     [&](uint32_t px, uint32_t py, const Color& radiance) {
+                         errors[(py - b.y0) * (b.x1 - b.x0) + (px - b.x0)].add(radiance.luminance());
+                     });
     return errors;
 }
 
@@ -75,6 +102,38 @@ uint32_t tile_minimum_samples(const TileGrid::Bounds& b, const std::vector<Pixel
         for (uint32_t nx = std::max(x, b.x0 + 1) - 1; nx <= std::min(x + 1, b.x1 - 1); ++nx)
             largest = std::max(largest, contrast(own, errors[(ny - b.y0) * width + (nx - b.x0)].mean()));
     return minimum_samples(adaptive, largest, spp);
+}
+
+/// Adaptive sampling of the tile `b` (integrators/adaptive_sampling.h): every pixel takes its
+/// first batch; then, knowing its neighbours' first batches, every pixel not yet converged
+/// takes its next sample, round after round, `group` of them together. Each pixel takes
+/// the samples, in the order, that it would alone.
+template <class Take>
+void sample_adaptively(const TileGrid::Bounds& b, const AdaptiveSampling& adaptive, uint32_t n, uint32_t group,
+                       const Take& take) {
+    const uint32_t width = b.x1 - b.x0;
+    std::vector<PixelError> errors = first_batches(b, adaptive, n, group, take);
+    // The minimums come from the first batches, before any pixel adds to its statistics.
+    std::vector<uint32_t> minimums(errors.size());
+    for (uint32_t y = b.y0; y < b.y1; ++y)
+        for (uint32_t x = b.x0; x < b.x1; ++x)
+            minimums[(y - b.y0) * width + (x - b.x0)] = tile_minimum_samples(b, errors, adaptive, n * n, x, y);
+    auto still_sampling = [&](uint32_t i) { return !converged(adaptive, errors[i], minimums[i]); };
+    std::vector<uint32_t> active;  // row by row
+    for (uint32_t i = 0; i < errors.size(); ++i)
+        if (still_sampling(i)) active.push_back(i);
+    std::array<PixelSample, RayPacket::kSize> lanes;
+    for (uint32_t k = adaptive.min_spp; k < n * n && !active.empty(); ++k) {
+        for (std::size_t first = 0; first < active.size(); first += group) {
+            const auto count = uint32_t(std::min<std::size_t>(group, active.size() - first));
+            for (uint32_t j = 0; j < count; ++j)
+                lanes[j] = {b.x0 + active[first + j] % width, b.y0 + active[first + j] / width, progressive_cell(k, n)};
+            take(std::span<const PixelSample>(lanes.data(), count), [&](uint32_t x, uint32_t y, const Color& radiance) {
+                errors[(y - b.y0) * width + (x - b.x0)].add(radiance.luminance());
+            });
+        }
+        std::erase_if(active, [&](uint32_t i) { return !still_sampling(i); });
+    }
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -112,11 +171,11 @@ CameraSample Integrator::take_sample(const RenderScene& scene, const Camera& cam
 }
 
 template <class AddSample>
-void Integrator::take_packet_samples(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y,
-                                     uint32_t count, uint32_t index, uint32_t width, uint32_t height,
-                                     std::span<Sampler> samplers, bool aovs, uint64_t& rays,
-                                     const AddSample& add) const {
-    // Each pixel's context: its own sampler and, for the AOVs, its own first-hit record.
+void Integrator::take_packet_samples(const RenderScene& scene, const Filter& filter, std::span<const PixelSample> lanes,
+                                     uint32_t width, uint32_t height, std::span<Sampler> samplers, bool aovs,
+                                     uint64_t& rays, const AddSample& add) const {
+    const auto count = uint32_t(lanes.size());
+    // Each lane's context: its own sampler and, for the AOVs, its own first-hit record.
     std::array<FirstHit, RayPacket::kSize> first_hits;
     auto context_of = [&](uint32_t k) {
         return TraceContext{.sampler = samplers[k], .first_hit = aovs ? &first_hits[k] : nullptr};
@@ -129,8 +188,9 @@ void Integrator::take_packet_samples(const RenderScene& scene, const Filter& fil
     std::array<Ray, RayPacket::kSize> camera_rays;
     RayPacket packet;
     for (uint32_t k = 0; k < count; ++k) {
-        camera_rays[k] =
-            camera_ray(scene, scene.camera(), filter, x + k, y, index, width, height, contexts[k], samples[k]);
+        const PixelSample& lane = lanes[k];
+        camera_rays[k] = camera_ray(scene, scene.camera(), filter, lane.x, lane.y, lane.index, width, height,
+                                    contexts[k], samples[k]);
         packet.set(k, camera_rays[k]);
     }
     PacketHits hits;
@@ -141,7 +201,7 @@ void Integrator::take_packet_samples(const RenderScene& scene, const Filter& fil
     for (uint32_t k = 0; k < count; ++k) {
         samples[k].radiance = radiance[k];
         rays += contexts[k].rays;
-        add(x + k, y, samples[k], first_hits[k]);
+        add(lanes[k].x, lanes[k].y, samples[k], first_hits[k]);
     }
 }
 
@@ -198,9 +258,11 @@ uint32_t Integrator::adaptive_minimum(const RenderScene& scene, const Camera& ca
     Sampler sampler(settings.seed, n);
     TraceContext context{sampler};
     const std::vector<PixelError> errors =
-        first_batches(b, *settings.adaptive, n, [&](uint32_t px, uint32_t py, uint32_t index) {
-            return take_sample(scene, camera, filter, px, py, index, settings.width, settings.height, context)
-                .radiance.luminance();
+        first_batches(b, *settings.adaptive, n, 1, [&](std::span<const PixelSample> lanes, const auto& then) {
+            for (const PixelSample& s : lanes)
+                then(s.x, s.y,
+                     take_sample(scene, camera, filter, s.x, s.y, s.index, settings.width, settings.height, context)
+                         .radiance);
         });
     return tile_minimum_samples(b, errors, *settings.adaptive, n * n, x, y);
 }
@@ -252,61 +314,37 @@ RenderStats Integrator::render_listed_tiles(const RenderScene& scene, const Rend
 
     auto render_tile = [&](uint32_t tile) {
         if (grid.done(tile) || (stop && stop->load(std::memory_order_relaxed))) return;
-        const auto [x0, y0, x1, y1] = grid.bounds(tile);
         Sampler sampler(settings.seed, n);
         TraceContext context{sampler};
         FirstHit first_hit;
         if (aovs) context.first_hit = &first_hit;
-        // Sample `index` of pixel (x, y) into the film (and the AOVs); its radiance.
-        auto add_sample = [&](uint32_t x, uint32_t y, uint32_t index) {
-            first_hit.hit = false;
-            const CameraSample sample = take_sample(scene, scene.camera(), filter, x, y, index, width, height, context);
-            film.add_sample(x, y, sample.radiance, sample.filter_weight);
-            if (aovs) aovs->add_sample(x, y, first_hit, sample.radiance);
-            return sample.radiance;
-        };
-        if (!settings.adaptive && takes_first_hits()) {
-            // Eight neighbouring pixels of a row take each sample together: their camera rays
-            // go through the scene as one packet. Each pixel still takes its samples in order,
-            // each lane from its own sampler, so the film is the one the loop below makes.
-            std::vector<Sampler> samplers(RayPacket::kSize, sampler);
+        // Camera rays in packets of neighbouring pixels when the integrator shades first hits.
+        const bool packets = takes_first_hits();
+        const uint32_t group = packets ? RayPacket::kSize : 1;
+        std::vector<Sampler> samplers(packets ? RayPacket::kSize : 0, sampler);
+        // The samples `lanes`, each into the film (and the AOVs) and to `then`: as one packet,
+        // or one by one. Each pixel takes its samples in order either way, each from the
+        // sampler started for it, so the film is the same.
+        auto take = [&](std::span<const PixelSample> lanes, const auto& then) {
             auto add = [&](uint32_t x, uint32_t y, const CameraSample& sample, const FirstHit& hit) {
                 film.add_sample(x, y, sample.radiance, sample.filter_weight);
                 if (aovs) aovs->add_sample(x, y, hit, sample.radiance);
+                then(x, y, sample.radiance);
             };
-            for (uint32_t y = y0; y < y1; ++y)
-                for (uint32_t x = x0; x < x1; x += RayPacket::kSize) {
-                    const uint32_t count = std::min(RayPacket::kSize, x1 - x);
-                    for (uint32_t index = 0; index < n * n; ++index)
-                        take_packet_samples(scene, filter, x, y, count, index, width, height, samplers, aovs != nullptr,
-                                            context.rays, add);
-                }
-        } else if (!settings.adaptive) {
-            for (uint32_t y = y0; y < y1; ++y)
-                for (uint32_t x = x0; x < x1; ++x)
-                    for (uint32_t index = 0; index < n * n; ++index) (void)add_sample(x, y, index);
-        } else {
-            // Every pixel of the tile takes its first batch; then each continues, knowing its
-            // neighbours' first batches (integrators/adaptive_sampling.h).
-            const AdaptiveSampling& adaptive = *settings.adaptive;
-            const TileGrid::Bounds b = grid.bounds(tile);
-            std::vector<PixelError> errors = first_batches(b, adaptive, n, [&](uint32_t x, uint32_t y, uint32_t index) {
-                return add_sample(x, y, index).luminance();
-            });
-            // The minimums come from the first batches, before any pixel adds to its statistics.
-            std::vector<uint32_t> minimums(errors.size());
-            for (uint32_t y = y0; y < y1; ++y)
-                for (uint32_t x = x0; x < x1; ++x)
-                    minimums[(y - y0) * (x1 - x0) + (x - x0)] = tile_minimum_samples(b, errors, adaptive, n * n, x, y);
-            for (uint32_t y = y0; y < y1; ++y)
-                for (uint32_t x = x0; x < x1; ++x) {
-                    const std::size_t i = (y - y0) * (x1 - x0) + (x - x0);
-                    PixelError& error = errors[i];
-                    const uint32_t minimum = minimums[i];
-                    for (uint32_t k = adaptive.min_spp; k < n * n && !converged(adaptive, error, minimum); ++k)
-                        error.add(add_sample(x, y, progressive_cell(k, n)).luminance());
-                }
-        }
+            if (packets) {
+                take_packet_samples(scene, filter, lanes, width, height, samplers, aovs != nullptr, context.rays, add);
+                return;
+            }
+            for (const PixelSample& s : lanes) {
+                first_hit.hit = false;
+                add(s.x, s.y, take_sample(scene, scene.camera(), filter, s.x, s.y, s.index, width, height, context),
+                    first_hit);
+            }
+        };
+        if (settings.adaptive)
+            sample_adaptively(grid.bounds(tile), *settings.adaptive, n, group, take);
+        else
+            sample_uniformly(grid.bounds(tile), n, group, take);
         rays += context.rays;
         grid.mark_done(tile);
         const uint32_t done = ++finished;

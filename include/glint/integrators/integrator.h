@@ -90,6 +90,11 @@ struct FirstHits {
     [[nodiscard]] bool hit(uint32_t lane) const { return (hit_lanes >> lane & 1) != 0; }
 };
 
+/// Sample `index` of pixel (x, y): one lane of a packet of camera samples.
+struct PixelSample {
+    uint32_t x = 0, y = 0, index = 0;
+};
+
 /// The threads this machine runs at once; more would not render faster.
 [[nodiscard]] uint32_t max_render_threads();
 
@@ -176,14 +181,14 @@ private:
     /// context.cone, and leaves the sampler where Li() takes over.
     Ray camera_ray(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x, uint32_t y,
                    uint32_t index, uint32_t width, uint32_t height, TraceContext& context, CameraSample& sample) const;
-    /// take_sample() for sample `index` of the `count` (at most RayPacket::kSize) pixels
-    /// (x, y), (x + 1, y), ..., their camera rays traced as one packet; pixel x + k draws
-    /// from `samplers[k]`. Each sample, with its radiance and (with `aovs`) its camera ray's
-    /// first hit, goes to `add(x, y, sample, first_hit)`, in the order of x.
+    /// take_sample() for each of `lanes` (at most RayPacket::kSize), their camera rays traced
+    /// as one packet; lane k draws from `samplers[k]`. Each sample, with its radiance and
+    /// (with `aovs`) its camera ray's first hit, goes to `add(x, y, sample, first_hit)`, in
+    /// the order of the lanes.
     template <class AddSample>
-    void take_packet_samples(const RenderScene& scene, const Filter& filter, uint32_t x, uint32_t y, uint32_t count,
-                             uint32_t index, uint32_t width, uint32_t height, std::span<Sampler> samplers, bool aovs,
-                             uint64_t& rays, const AddSample& add) const;
+    void take_packet_samples(const RenderScene& scene, const Filter& filter, std::span<const PixelSample> lanes,
+                             uint32_t width, uint32_t height, std::span<Sampler> samplers, bool aovs, uint64_t& rays,
+                             const AddSample& add) const;
 };
 
 }  // namespace glint
