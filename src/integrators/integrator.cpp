@@ -185,14 +185,21 @@ void Integrator::take_packet_samples(const RenderScene& scene, const Filter& fil
     }
     (std::make_index_sequence<RayPacket::kSize>());
     std::array<CameraSample, RayPacket::kSize> samples;
-    std::array<Ray, RayPacket::kSize> camera_rays;
-    RayPacket packet;
-    for (uint32_t k = 0; k < count; ++k) {
+    // Each camera ray is made where it stays (copy elision of the array's elements): copied out
+    // of a temporary, it came back through one wide load of the narrower stores just made, a
+    // store-forwarding stall that cost more than making the ray.
+    auto camera_ray_of = [&](uint32_t k) {
+        if (k >= count) return Ray();
         const PixelSample& lane = lanes[k];
-        camera_rays[k] = camera_ray(scene, scene.camera(), filter, lane.x, lane.y, lane.index, width, height,
-                                    contexts[k], samples[k]);
-        packet.set(k, camera_rays[k]);
+        return camera_ray(scene, scene.camera(), filter, lane.x, lane.y, lane.index, width, height, contexts[k],
+                          samples[k]);
+    };
+    const std::array<Ray, RayPacket::kSize> camera_rays = [&]<std::size_t... K>(std::index_sequence<K...>) {
+        return std::array<Ray, RayPacket::kSize>{camera_ray_of(K)...};
     }
+    (std::make_index_sequence<RayPacket::kSize>());
+    RayPacket packet;
+    for (uint32_t k = 0; k < count; ++k) packet.set(k, camera_rays[k]);
     PacketHits hits;
     const uint32_t hit_lanes = scene.intersect_packet(packet, hits);
     std::array<Color, RayPacket::kSize> radiance;
