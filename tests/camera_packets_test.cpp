@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,46 +50,49 @@ int differing_pixels(const Image& a, const Image& b) {
     return differ;
 }
 
-/// Pixels in which the render of scene `name` with `settings` changed by `change` differs,
-/// camera rays in packets against one by one (the radiance and every AOV channel).
-template <class Change>
-int pixels_packets_change(const std::string& name, const Change& change, bool& takes_packets) {
+/// Scene `name` rendered with camera rays in packets and one by one (with `adaptive`
+/// sampling when given): how many pixels differ, in the radiance or any AOV channel.
+struct PacketsAgainstSingles {
+    int differing_pixels = 0;
+    /// False for an integrator that takes no packets (both renders are then one by one).
+    bool takes_packets = false;
+};
+
+PacketsAgainstSingles render_both_ways(const std::string& name, std::optional<AdaptiveSampling> adaptive) {
     LoadedScene loaded = load_toml_scene(glint_test::kScenesDir / (name + ".toml"));
     loaded.settings.width = kPacketsWidth;
     loaded.settings.height = kPacketsHeight;
-    change(loaded.settings);
+    if (adaptive) {
+        loaded.settings.samples_per_axis = 4;
+        loaded.settings.adaptive = adaptive;
+    }
     const RenderScene scene(std::move(loaded.scene));
     const std::unique_ptr<Integrator> integrator = make_integrator(loaded.settings);
-    takes_packets = integrator->takes_first_hits();
     const OneRayAtATime one_by_one(*integrator);
     const std::vector<Aov> aovs = {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Spp, Aov::Variance};
     Film packets(kPacketsWidth, kPacketsHeight), singles(kPacketsWidth, kPacketsHeight);
     AovFilm packet_aovs(kPacketsWidth, kPacketsHeight, aovs), single_aovs(kPacketsWidth, kPacketsHeight, aovs);
     integrator->render(scene, loaded.settings, packets, {}, nullptr, nullptr, &packet_aovs);
     one_by_one.render(scene, loaded.settings, singles, {}, nullptr, nullptr, &single_aovs);
-    return differing_pixels(packet_aovs.append_to(packets.to_image()), single_aovs.append_to(singles.to_image()));
+    return {differing_pixels(packet_aovs.append_to(packets.to_image()), single_aovs.append_to(singles.to_image())),
+            integrator->takes_first_hits()};
 }
 
 class CameraPackets : public testing::TestWithParam<std::string> {};
 
 TEST_P(CameraPackets, RenderTheImageOfSingleRays) {
-    bool takes_packets = false;
-    EXPECT_EQ(pixels_packets_change(
-                  GetParam(), [](RenderSettings&) {}, takes_packets),
-              0)
-        << "of " << kPacketsWidth * kPacketsHeight << (takes_packets ? "" : " (this integrator takes no packets)");
+    const PacketsAgainstSingles result = render_both_ways(GetParam(), std::nullopt);
+    EXPECT_EQ(result.differing_pixels, 0) << "of " << kPacketsWidth * kPacketsHeight
+                                          << (result.takes_packets ? "" : " (this integrator takes no packets)");
 }
 
-// Adaptive sampling packs the pixels still sampling, wherever they are in the tile, and each
-// must still take its own samples in its own order.
+// Adaptive sampling (2 to 16 spp) packs the pixels still sampling, wherever they are in the
+// tile, and each must still take its own samples in its own order.
 TEST_P(CameraPackets, RenderTheAdaptiveImageOfSingleRays) {
-    bool takes_packets = false;
-    auto adaptive = [](RenderSettings& settings) {
-        settings.samples_per_axis = 4;
-        settings.adaptive = AdaptiveSampling{.min_spp = 2, .threshold = 0.02f};
-    };
-    EXPECT_EQ(pixels_packets_change(GetParam(), adaptive, takes_packets), 0)
-        << "of " << kPacketsWidth * kPacketsHeight << (takes_packets ? "" : " (this integrator takes no packets)");
+    const PacketsAgainstSingles result =
+        render_both_ways(GetParam(), AdaptiveSampling{.min_spp = 2, .threshold = 0.02f});
+    EXPECT_EQ(result.differing_pixels, 0) << "of " << kPacketsWidth * kPacketsHeight
+                                          << (result.takes_packets ? "" : " (this integrator takes no packets)");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, CameraPackets,

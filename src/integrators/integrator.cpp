@@ -50,6 +50,11 @@ void check_adaptive(const RenderSettings& settings) {
         throw std::invalid_argument("adaptive sampling: the minimum samples per pixel must be from 1 to the maximum");
 }
 
+/// Pixel (x, y)'s index among the pixels of the tile `b`, row by row.
+std::size_t tile_pixel(const TileGrid::Bounds& b, uint32_t x, uint32_t y) {
+    return std::size_t(y - b.y0) * (b.x1 - b.x0) + (x - b.x0);
+}
+
 // The tile loops below take their samples through `take(lanes, then)`: it takes the samples
 // `lanes` (at most RayPacket::kSize; as one packet or one by one, as the caller chooses) and
 // hands each one's radiance to `then(x, y, radiance)`.
@@ -86,7 +91,7 @@ std::vector<PixelError> first_batches(const TileGrid::Bounds& b, const AdaptiveS
             for (uint32_t k = 0; k < adaptive.min_spp; ++k)
                 take(row_lanes(lanes, x, b.x1, y, group, progressive_cell(k, n)),
                      [&](uint32_t px, uint32_t py, const Color& radiance) {
-                         errors[(py - b.y0) * (b.x1 - b.x0) + (px - b.x0)].add(radiance.luminance());
+                         errors[tile_pixel(b, px, py)].add(radiance.luminance());
                      });
     return errors;
 }
@@ -95,12 +100,11 @@ std::vector<PixelError> first_batches(const TileGrid::Bounds& b, const AdaptiveS
 /// first-batch mean luminance and its neighbours' in the tile (`errors` from first_batches).
 uint32_t tile_minimum_samples(const TileGrid::Bounds& b, const std::vector<PixelError>& errors,
                               const AdaptiveSampling& adaptive, uint32_t spp, uint32_t x, uint32_t y) {
-    const uint32_t width = b.x1 - b.x0;
-    const float own = errors[(y - b.y0) * width + (x - b.x0)].mean();
+    const float own = errors[tile_pixel(b, x, y)].mean();
     float largest = 0.0f;
     for (uint32_t ny = std::max(y, b.y0 + 1) - 1; ny <= std::min(y + 1, b.y1 - 1); ++ny)
         for (uint32_t nx = std::max(x, b.x0 + 1) - 1; nx <= std::min(x + 1, b.x1 - 1); ++nx)
-            largest = std::max(largest, contrast(own, errors[(ny - b.y0) * width + (nx - b.x0)].mean()));
+            largest = std::max(largest, contrast(own, errors[tile_pixel(b, nx, ny)].mean()));
     return minimum_samples(adaptive, largest, spp);
 }
 
@@ -117,19 +121,20 @@ void sample_adaptively(const TileGrid::Bounds& b, const AdaptiveSampling& adapti
     std::vector<uint32_t> minimums(errors.size());
     for (uint32_t y = b.y0; y < b.y1; ++y)
         for (uint32_t x = b.x0; x < b.x1; ++x)
-            minimums[(y - b.y0) * width + (x - b.x0)] = tile_minimum_samples(b, errors, adaptive, n * n, x, y);
+            minimums[tile_pixel(b, x, y)] = tile_minimum_samples(b, errors, adaptive, n * n, x, y);
     auto still_sampling = [&](uint32_t i) { return !converged(adaptive, errors[i], minimums[i]); };
     std::vector<uint32_t> active;  // row by row
     for (uint32_t i = 0; i < errors.size(); ++i)
         if (still_sampling(i)) active.push_back(i);
     std::array<PixelSample, RayPacket::kSize> lanes;
     for (uint32_t k = adaptive.min_spp; k < n * n && !active.empty(); ++k) {
+        const uint32_t index = progressive_cell(k, n);
         for (std::size_t first = 0; first < active.size(); first += group) {
             const auto count = uint32_t(std::min<std::size_t>(group, active.size() - first));
             for (uint32_t j = 0; j < count; ++j)
-                lanes[j] = {b.x0 + active[first + j] % width, b.y0 + active[first + j] / width, progressive_cell(k, n)};
+                lanes[j] = {b.x0 + active[first + j] % width, b.y0 + active[first + j] / width, index};
             take(std::span<const PixelSample>(lanes.data(), count), [&](uint32_t x, uint32_t y, const Color& radiance) {
-                errors[(y - b.y0) * width + (x - b.x0)].add(radiance.luminance());
+                errors[tile_pixel(b, x, y)].add(radiance.luminance());
             });
         }
         std::erase_if(active, [&](uint32_t i) { return !still_sampling(i); });
@@ -180,24 +185,14 @@ void Integrator::take_packet_samples(const RenderScene& scene, const Filter& fil
     auto context_of = [&](uint32_t k) {
         return TraceContext{.sampler = samplers[k], .first_hit = aovs ? &first_hits[k] : nullptr};
     };
-    std::array<TraceContext, RayPacket::kSize> contexts = [&]<std::size_t... K>(std::index_sequence<K...>) {
-        return std::array{context_of(K)...};
-    }
-    (std::make_index_sequence<RayPacket::kSize>());
+    std::array<TraceContext, RayPacket::kSize> contexts = per_lane(context_of);
     std::array<CameraSample, RayPacket::kSize> samples;
-    // Each camera ray is made where it stays (copy elision of the array's elements): copied out
-    // of a temporary, it came back through one wide load of the narrower stores just made, a
-    // store-forwarding stall that cost more than making the ray.
-    auto camera_ray_of = [&](uint32_t k) {
+    const std::array<Ray, RayPacket::kSize> camera_rays = per_lane([&](uint32_t k) {
         if (k >= count) return Ray();
         const PixelSample& lane = lanes[k];
         return camera_ray(scene, scene.camera(), filter, lane.x, lane.y, lane.index, width, height, contexts[k],
                           samples[k]);
-    };
-    const std::array<Ray, RayPacket::kSize> camera_rays = [&]<std::size_t... K>(std::index_sequence<K...>) {
-        return std::array<Ray, RayPacket::kSize>{camera_ray_of(K)...};
-    }
-    (std::make_index_sequence<RayPacket::kSize>());
+    });
     RayPacket packet;
     for (uint32_t k = 0; k < count; ++k) packet.set(k, camera_rays[k]);
     PacketHits hits;

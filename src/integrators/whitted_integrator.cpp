@@ -90,17 +90,10 @@ void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const Firs
         return;
     }
     // Every hit's point first, then the shadow rays of all toward each delta light as packets.
-    // Each made where it stays (copy elision of the array's elements), as the render makes
-    // the camera rays (Integrator::take_packet_samples): assigned from a temporary, each came
-    // back through wide loads of the narrower stores just made, which cannot be forwarded.
-    auto interaction_of = [&](uint32_t k) {
+    std::array<SurfaceInteraction, RayPacket::kSize> interactions = per_lane([&](uint32_t k) {
         if (k >= first.rays.size() || !first.hit(k)) return SurfaceInteraction();
         return scene.interaction(ray_to_hit(first.rays[k], first.hits.t[k]), first.hits.hit(k));
-    };
-    std::array<SurfaceInteraction, RayPacket::kSize> interactions = [&]<std::size_t... K>(std::index_sequence<K...>) {
-        return std::array<SurfaceInteraction, RayPacket::kSize>{interaction_of(K)...};
-    }
-    (std::make_index_sequence<RayPacket::kSize>());
+    });
     const std::array<DeltaLightShadows, RayPacket::kSize> shadows =
         trace_delta_light_shadows(scene, interactions, first.hit_lanes);
     for (uint32_t k = 0; k < first.rays.size(); ++k) shade_lane(k, &interactions[k], &shadows[k]);

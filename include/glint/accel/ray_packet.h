@@ -9,8 +9,11 @@
 #include "glint/math/constants.h"
 #include "glint/math/ray.h"
 
+#include <array>
 #include <bit>
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 namespace glint {
 
@@ -45,6 +48,19 @@ struct alignas(32) RayPacket {
                    time[lane]);
     }
 };
+
+/// One value per lane, lane k's made by `make(k)` in the array itself (the elements'
+/// copy elision). Assigned from a temporary instead, a fresh struct comes back through wide
+/// loads of the narrower stores just made, which the CPU cannot forward: a stall that cost
+/// the render's camera rays and first hits more than making them (docs/performance.md).
+template <class Make>
+[[nodiscard]] auto per_lane(const Make& make) {
+    using Value = std::invoke_result_t<const Make&, uint32_t>;
+    return [&]<std::size_t... K>(std::index_sequence<K...>) {
+        return std::array<Value, RayPacket::kSize>{make(uint32_t(K))...};
+    }
+    (std::make_index_sequence<RayPacket::kSize>());
+}
 
 /// Closest hits of a packet's lanes, as Hit holds them for one ray (t, primitive, the
 /// shape's parameters, and, from the scene's queries, the object); a lane without a hit
