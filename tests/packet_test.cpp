@@ -6,6 +6,7 @@
 #include "glint/accel/ray_packet.h"
 #include "glint/accel/triangle_bvh.h"
 #include "glint/assets/mesh_loader.h"
+#include "glint/geometry/quad.h"
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/scene/render_scene.h"
@@ -186,9 +187,78 @@ TEST(PacketDegenerate, AnEmptyBvhHitsNothing) {
     EXPECT_EQ(triangles.occluded_packet(packet), 0u);
 }
 
+/// Every active lane of packets of `rays` (`lanes` of each) gets from the shape's packet
+/// queries what its ray gets alone, to the bit; inactive lanes keep what they held. Returns
+/// the hits.
+int expect_shape_packets_agree(const Shape& shape, const std::vector<Ray>& rays, uint32_t lanes) {
+    int hits = 0;
+    for (size_t first = 0; first + RayPacket::kSize <= rays.size(); first += RayPacket::kSize) {
+        RayPacket packet;
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) packet.set(lane, rays[first + lane]);
+        packet.active = lanes;
+        const uint32_t occluded_lanes = shape.occluded_packet(packet);
+        PacketHits packet_hits;
+        std::fill(std::begin(packet_hits.t), std::end(packet_hits.t), -1.0f);
+        const uint32_t hit_lanes = shape.intersect_packet(packet, packet_hits);
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) {
+            const size_t i = first + lane;
+            if (!(lanes >> lane & 1)) {
+                EXPECT_FALSE((hit_lanes | occluded_lanes) >> lane & 1) << "inactive lane " << lane;
+                EXPECT_EQ(packet.tmax[lane], rays[i].tmax) << "inactive lane " << lane;
+                EXPECT_EQ(packet_hits.t[lane], -1.0f) << "inactive lane " << lane;
+                continue;
+            }
+            Ray ray = rays[i];
+            Hit hit;
+            const bool single = shape.intersect(ray, hit);
+            EXPECT_EQ(bool(occluded_lanes >> lane & 1), shape.occluded(rays[i])) << "any hit, ray " << i;
+            EXPECT_EQ(bool(hit_lanes >> lane & 1), single) << "ray " << i;
+            if (bool(hit_lanes >> lane & 1) != single) continue;
+            if (!single) {
+                EXPECT_EQ(packet.tmax[lane], rays[i].tmax) << "ray " << i;
+                continue;
+            }
+            ++hits;
+            EXPECT_EQ(packet_hits.t[lane], hit.t) << "ray " << i;
+            EXPECT_EQ(packet.tmax[lane], hit.t) << "ray " << i;
+            EXPECT_EQ(packet_hits.primitive[lane], hit.primitive) << "ray " << i;
+            EXPECT_EQ(packet_hits.u[lane], hit.u) << "ray " << i;
+            EXPECT_EQ(packet_hits.v[lane], hit.v) << "ray " << i;
+        }
+    }
+    return hits;
+}
+
+TEST(QuadPackets, EveryLaneGetsWhatItsRayGetsAlone) {
+    // A floor and a tilted parallelogram; rays from a camera, from everywhere around, along
+    // the plane, through its corners and edges, and ending just before or after it.
+    const Quad floor(Vec3(-2.0f, 0.0f, 2.0f), Vec3(4.0f, 0.0f, 0.0f), Vec3(0.0f, 0.0f, -4.0f));
+    const Quad tilted(Vec3(0.3f, -0.2f, 0.1f), Vec3(1.1f, 0.4f, -0.3f), Vec3(0.2f, 0.9f, 0.7f));
+    for (const Quad* quad : {&floor, &tilted}) {
+        const Bounds3 box = quad->bounds();
+        std::vector<Ray> rays = camera_rays(box, Vec3(0.2f, 0.7f, 0.6f), 32);
+        for (const Ray& r : random_rays(box, 2000, 3)) rays.push_back(r);
+        const Vec3 centre = box.center();
+        for (const Vec3& p : {Vec3(-2, 0, 2), Vec3(2, 0, 2), Vec3(-2, 0, -2), Vec3(0, 0, 2), Vec3(2, 0, 0.5f)})
+            for (const Vec3& d : {Vec3(0, -1, 0), Vec3(0.3f, -1, 0.2f), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, -1)}) {
+                const Vec3 dir = normalize(d);
+                rays.emplace_back(p - dir * 3.0f, dir);                    // through a corner or edge point
+                rays.emplace_back(p - dir * 3.0f, dir, 0.0f, 3.0f);        // ending there
+                rays.emplace_back(p - dir * 3.0f, dir, 0.0f, 2.9999f);     // ending just before
+                rays.emplace_back(p + Vec3(0, 0.5f, 0), dir, 0.1f, 0.4f);  // a segment above
+            }
+        for (int i = 0; i < 8; ++i) rays.emplace_back(centre + Vec3(0, 0, 0), Vec3(1, 0, 0));  // in the plane
+        rays.resize(rays.size() / RayPacket::kSize * RayPacket::kSize);
+        const int hits = expect_shape_packets_agree(*quad, rays, RayPacket::kAllLanes);
+        EXPECT_GT(hits, int(rays.size()) / 10);
+        EXPECT_LT(hits, int(rays.size()) * 9 / 10);
+        for (const uint32_t lanes : {0x01u, 0x80u, 0x5au}) expect_shape_packets_agree(*quad, rays, lanes);
+    }
+}
+
 /// A scene of `copies` placements of the icosphere (turned, stretched, one mirrored), a
-/// sphere, and a glass copy (which shadow rays pass under DielectricShadows::None); with
-/// `moving`, one placement moves during the shutter.
+/// sphere, a floor quad placed twice (as it is, and turned), and a glass copy (which shadow rays pass under
+/// DielectricShadows::None); with `moving`, one placement moves during the shutter.
 RenderScene placed_scene(int copies, bool moving) {
     auto mesh = std::make_shared<TriangleMesh>(load_mesh_data(glint_test::kTestDataDir / "icosphere.ply"));
     Scene scene;
@@ -206,6 +276,12 @@ RenderScene placed_scene(int copies, bool moving) {
             scene.set_motion(object, AnimatedTransform({{0.0f, t}, {1.0f, Transform::translate(Vec3(0.4f, 0, 0)) * t}}));
     }
     scene.add_object(std::make_shared<Sphere>(Vec3(0.5f, 0.3f, -2.0f), 1.2f), matte);
+    // A floor under them, once as it is and once turned and moved.
+    const auto floor =
+        std::make_shared<Quad>(Vec3(-6.0f, -2.5f, 3.0f), Vec3(12.0f, 0.0f, 0.0f), Vec3(0.0f, 0.0f, -6.0f));
+    scene.add_object(floor, matte);
+    scene.add_object(floor, matte,
+                     Transform::translate(Vec3(0, -1.0f, -4.0f)) * Transform::rotate(70.0f, Vec3(1, 0, 0)));
     return RenderScene(std::move(scene));
 }
 

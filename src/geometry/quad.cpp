@@ -13,6 +13,8 @@ Quad::Quad(const Vec3& corner, const Vec3& edge_u, const Vec3& edge_v)
     if (!(length(n) > 0.0f) || !is_finite(n) || !is_finite(corner))
         throw std::invalid_argument("quad edges must be finite, non-zero and not parallel");
     normal_ = normalize(n);
+    cross_uv_ = n;
+    inv_cross_uv2_ = 1.0f / dot(n, n);
     area_ = length(n);
 }
 
@@ -30,24 +32,35 @@ Bounds3 Quad::bounds() const {
     return b;
 }
 
-bool Quad::hit_parameters(const Ray& ray, float& t, float& a, float& b) const {
+bool Quad::hit_parameters(const Vec3& origin, const Vec3& direction, float tmin, float tmax, float& t, float& a,
+                          float& b) const {
     // Plane hit, then the coordinates (a, b) of the point in the (edge_u, edge_v) basis
-    // from the dual basis: a = (w × edge_v)·n / (edge_u × edge_v)·n, likewise for b.
-    const float denom = dot(normal_, ray.direction);
-    if (denom == 0.0f) return false;
-    t = dot(normal_, corner_ - ray.origin) / denom;
-    if (!(t > ray.tmin && t < ray.tmax)) return false;
-    const Vec3 w = ray.at(t) - corner_;
-    const Vec3 n = cross(edge_u_, edge_v_);
-    const float inv = 1.0f / dot(n, n);
-    a = dot(cross(w, edge_v_), n) * inv;
-    b = dot(cross(edge_u_, w), n) * inv;
-    return a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f;
+    // from the dual basis: a = (w × edge_v)·n / (edge_u × edge_v)·n, likewise for b. A ray
+    // parallel to the plane (denom 0) gets t = ±inf or NaN, which the range test refuses.
+    const float denom = dot(normal_, direction);
+    t = dot(normal_, corner_ - origin) / denom;
+    const Vec3 w = origin + direction * t - corner_;
+    a = dot(cross(w, edge_v_), cross_uv_) * inv_cross_uv2_;
+    b = dot(cross(edge_u_, w), cross_uv_) * inv_cross_uv2_;
+    return (denom != 0.0f) & (t > tmin) & (t < tmax) & (a >= 0.0f) & (a <= 1.0f) & (b >= 0.0f) & (b <= 1.0f);
+}
+
+Quad::PacketHitParameters Quad::hit_lanes(const RayPacket& packet) const {
+    PacketHitParameters p;
+    // Flags as wide as the floats: with bools GCC vectorised the loop two lanes at a time.
+    uint32_t hit[RayPacket::kSize];
+    for (uint32_t k = 0; k < RayPacket::kSize; ++k) {
+        const Vec3 origin(packet.origin[0][k], packet.origin[1][k], packet.origin[2][k]);
+        const Vec3 direction(packet.direction[0][k], packet.direction[1][k], packet.direction[2][k]);
+        hit[k] = hit_parameters(origin, direction, packet.tmin[k], packet.tmax[k], p.t[k], p.a[k], p.b[k]);
+    }
+    for (uint32_t k = 0; k < RayPacket::kSize; ++k) p.lanes |= hit[k] << k;
+    return p;
 }
 
 bool Quad::intersect(Ray& ray, Hit& hit) const {
     float t, a, b;
-    if (!hit_parameters(ray, t, a, b)) return false;
+    if (!hit_parameters(ray.origin, ray.direction, ray.tmin, ray.tmax, t, a, b)) return false;
     ray.tmax = t;
     hit.t = t;
     hit.primitive = 0;
@@ -58,8 +71,24 @@ bool Quad::intersect(Ray& ray, Hit& hit) const {
 
 bool Quad::occluded(const Ray& ray) const {
     float t, a, b;
-    return hit_parameters(ray, t, a, b);
+    return hit_parameters(ray.origin, ray.direction, ray.tmin, ray.tmax, t, a, b);
 }
+
+uint32_t Quad::intersect_packet(RayPacket& packet, PacketHits& hits) const {
+    const PacketHitParameters p = hit_lanes(packet);
+    const uint32_t lanes = p.lanes & packet.active;
+    for (uint32_t k = 0; k < RayPacket::kSize; ++k) {
+        if (!(lanes >> k & 1)) continue;
+        packet.tmax[k] = p.t[k];
+        hits.t[k] = p.t[k];
+        hits.primitive[k] = 0;
+        hits.u[k] = p.a[k];
+        hits.v[k] = p.b[k];
+    }
+    return lanes;
+}
+
+uint32_t Quad::occluded_packet(const RayPacket& packet) const { return hit_lanes(packet).lanes & packet.active; }
 
 void Quad::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
     si.p = corner_ + edge_u_ * hit.u + edge_v_ * hit.v;

@@ -54,7 +54,10 @@ public:
     /// one; a mesh traces them together.
     virtual uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const;
     [[nodiscard]] virtual uint32_t occluded_packet(const RayPacket& packet) const;
-    /// Whether the packet queries trace the lanes together rather than one by one.
+    /// Whether the packet queries trace the lanes together through a structure they share
+    /// (a mesh's BVH), so that a scene with this shape renders faster in packets. A quad
+    /// takes its lanes at once too, but in a few SIMD operations that cost what single rays
+    /// do: scenes of quads and spheres render no faster in packets (docs/performance.md).
     [[nodiscard]] virtual bool traces_packets() const { return false; }
 
     /// intersect() and occluded() that also count what they test, for the viewer's heatmaps
