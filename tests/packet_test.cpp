@@ -230,15 +230,18 @@ int expect_shape_packets_agree(const Shape& shape, const std::vector<Ray>& rays,
 }
 
 TEST(QuadPackets, EveryLaneGetsWhatItsRayGetsAlone) {
-    // A floor and a tilted parallelogram; rays from a camera, from everywhere around, along
-    // the plane, through its corners and edges, and ending just before or after it.
-    const Quad floor(Vec3(-2.0f, 0.0f, 2.0f), Vec3(4.0f, 0.0f, 0.0f), Vec3(0.0f, 0.0f, -4.0f));
-    const Quad tilted(Vec3(0.3f, -0.2f, 0.1f), Vec3(1.1f, 0.4f, -0.3f), Vec3(0.2f, 0.9f, 0.7f));
-    for (const Quad* quad : {&floor, &tilted}) {
-        const Bounds3 box = quad->bounds();
+    // A floor and a tilted parallelogram; rays from a camera, from everywhere around, through
+    // the floor's corners and edges and ending there or just before, segments above it, and
+    // a packet of rays in each quad's own plane.
+    struct Placed {
+        Vec3 corner, edge_u, edge_v;
+    };
+    for (const Placed& q : {Placed{Vec3(-2.0f, 0.0f, 2.0f), Vec3(4.0f, 0.0f, 0.0f), Vec3(0.0f, 0.0f, -4.0f)},
+                            Placed{Vec3(0.3f, -0.2f, 0.1f), Vec3(1.1f, 0.4f, -0.3f), Vec3(0.2f, 0.9f, 0.7f)}}) {
+        const Quad quad(q.corner, q.edge_u, q.edge_v);
+        const Bounds3 box = quad.bounds();
         std::vector<Ray> rays = camera_rays(box, Vec3(0.2f, 0.7f, 0.6f), 32);
         for (const Ray& r : random_rays(box, 2000, 3)) rays.push_back(r);
-        const Vec3 centre = box.center();
         for (const Vec3& p : {Vec3(-2, 0, 2), Vec3(2, 0, 2), Vec3(-2, 0, -2), Vec3(0, 0, 2), Vec3(2, 0, 0.5f)})
             for (const Vec3& d : {Vec3(0, -1, 0), Vec3(0.3f, -1, 0.2f), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, -1)}) {
                 const Vec3 dir = normalize(d);
@@ -247,18 +250,22 @@ TEST(QuadPackets, EveryLaneGetsWhatItsRayGetsAlone) {
                 rays.emplace_back(p - dir * 3.0f, dir, 0.0f, 2.9999f);     // ending just before
                 rays.emplace_back(p + Vec3(0, 0.5f, 0), dir, 0.1f, 0.4f);  // a segment above
             }
-        for (int i = 0; i < 8; ++i) rays.emplace_back(centre + Vec3(0, 0, 0), Vec3(1, 0, 0));  // in the plane
         rays.resize(rays.size() / RayPacket::kSize * RayPacket::kSize);
-        const int hits = expect_shape_packets_agree(*quad, rays, RayPacket::kAllLanes);
+        const Vec3 centre = q.corner + (q.edge_u + q.edge_v) * 0.5f;
+        for (const Vec3& from : {centre, q.corner})
+            for (const Vec3& along : {q.edge_u, -q.edge_u, q.edge_v, -q.edge_v})
+                rays.emplace_back(from, normalize(along));  // in the plane: never a hit
+        const int hits = expect_shape_packets_agree(quad, rays, RayPacket::kAllLanes);
         EXPECT_GT(hits, int(rays.size()) / 10);
         EXPECT_LT(hits, int(rays.size()) * 9 / 10);
-        for (const uint32_t lanes : {0x01u, 0x80u, 0x5au}) expect_shape_packets_agree(*quad, rays, lanes);
+        for (const uint32_t lanes : {0x01u, 0x80u, 0x5au}) expect_shape_packets_agree(quad, rays, lanes);
     }
 }
 
 /// A scene of `copies` placements of the icosphere (turned, stretched, one mirrored), a
-/// sphere, a floor quad placed twice (as it is, and turned), and a glass copy (which shadow rays pass under
-/// DielectricShadows::None); with `moving`, one placement moves during the shutter.
+/// sphere, a floor quad placed twice (as it is, and turned), and a glass copy (which shadow
+/// rays pass under DielectricShadows::None); with `moving`, one placement moves during the
+/// shutter.
 RenderScene placed_scene(int copies, bool moving) {
     auto mesh = std::make_shared<TriangleMesh>(load_mesh_data(glint_test::kTestDataDir / "icosphere.ply"));
     Scene scene;

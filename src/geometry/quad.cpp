@@ -80,10 +80,7 @@ uint32_t Quad::intersect_packet(RayPacket& packet, PacketHits& hits) const {
     for (uint32_t k = 0; k < RayPacket::kSize; ++k) {
         if (!(lanes >> k & 1)) continue;
         packet.tmax[k] = p.t[k];
-        hits.t[k] = p.t[k];
-        hits.primitive[k] = 0;
-        hits.u[k] = p.a[k];
-        hits.v[k] = p.b[k];
+        hits.set(k, Hit{.t = p.t[k], .primitive = 0, .u = p.a[k], .v = p.b[k]});
     }
     return lanes;
 }
