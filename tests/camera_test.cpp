@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 using namespace glint;
 
@@ -14,6 +15,44 @@ TEST(Camera, CentrePixelLooksAlongTheViewDirection) {
     const Vec3 expected = normalize(Vec3(0, 2, 0) - Vec3(22, 24, 26));
     EXPECT_NEAR(dot(r.direction, expected), 1.0f, 1e-6f);
     EXPECT_EQ(r.origin, Vec3(22, 24, 26));
+}
+
+// The render makes a packet's camera rays together (Camera::generate_rays) and explain()
+// makes them one by one: both must be the same rays to the bit. An oblique view gives every
+// product of the direction a part, so a product fused one way for one ray and another way
+// for eight shows.
+TEST(Camera, GenerateRaysMakesTheRaysOfGenerateRayBitForBit) {
+    Camera lens = Camera::perspective({1, 2, 3}, {0, 0, 0}, {0, 1, 0}, 35.0f);
+    lens.set_lens(ThinLens{.aperture_radius = 0.1f, .focus_distance = 3.0f});
+    Camera moving = Camera::perspective({22, 24, 26}, {0, 2, 0}, {0, 1, 0}, 52.0f);
+    moving.set_motion({{0.0f, {22, 24, 26}, {0, 2, 0}}, {1.0f, {20, 24, 27}, {0, 2, 1}}});
+    const Camera cameras[] = {Camera::perspective({22, 24, 26}, {0, 2, 0}, {0, 1, 0}, 52.0f),
+                              Camera::perspective({-3, 0.5f, 7}, {1, 1, -2}, {0.2f, 1, 0}, 70.0f),
+                              Camera::orthographic({5, 4, 3}, {0, 0, 0}, {0, 1, 0}, 6.0f), lens, moving};
+    uint32_t state = 12345;
+    auto next = [&] {
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) * 0x1p-24f;
+    };
+    for (const Camera& camera : cameras)
+        for (size_t count = 1; count <= 19; ++count) {  // whole batches of eight and a tail
+            std::vector<Vec2> film(count), u_lens(count);
+            std::vector<float> times(count);
+            for (size_t k = 0; k < count; ++k) {
+                film[k] = Vec2(next() * 640.0f, next() * 480.0f);
+                u_lens[k] = Vec2(next(), next());
+                times[k] = next();
+            }
+            std::vector<Ray> rays(count);
+            camera.generate_rays(film, 640, 480, u_lens, times, rays);
+            for (size_t k = 0; k < count; ++k) {
+                const Ray one = camera.generate_ray(film[k].x, film[k].y, 640, 480, u_lens[k], times[k]);
+                EXPECT_EQ(rays[k].origin, one.origin) << "ray " << k << " of " << count;
+                EXPECT_EQ(rays[k].direction, one.direction) << "ray " << k << " of " << count;
+                EXPECT_EQ(rays[k].time, one.time) << "ray " << k << " of " << count;
+                EXPECT_EQ(rays[k].tmax, one.tmax);
+            }
+        }
 }
 
 TEST(Camera, EdgesMatchTheFieldOfView) {

@@ -147,21 +147,29 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+Integrator::LensAndTime Integrator::start_camera_sample(const RenderScene& scene, const Camera& camera,
+                                                        const Filter& filter, uint32_t x, uint32_t y, uint32_t index,
+                                                        uint32_t width, Sampler& sampler, CameraSample& sample) const {
+    sampler.start_pixel_sample(uint64_t(y) * width + x, index);
+    const FilterSample fs = filter.sample(sampler.pixel_2d());
+    sample.film_position = Vec2((float(x) + 0.5f) + fs.offset.x, (float(y) + 0.5f) + fs.offset.y);
+    sample.filter_weight = fs.weight;
+    LensAndTime lt;
+    // The lens takes a sampler dimension only when there is a lens, so that a pinhole
+    // camera's images stay what they were.
+    if (!camera.lens().is_pinhole()) lt.u_lens = sampler.next_2d();
+    // Likewise time, only when something moves (motion blur): a static scene's images do
+    // not depend on the shutter.
+    lt.time = scene.has_motion() ? camera.time(sampler.next_1d()) : camera.shutter().open;
+    return lt;
+}
+
 Ray Integrator::camera_ray(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x, uint32_t y,
                            uint32_t index, uint32_t width, uint32_t height, TraceContext& context,
                            CameraSample& sample) const {
-    context.sampler.start_pixel_sample(uint64_t(y) * width + x, index);
-    const FilterSample fs = filter.sample(context.sampler.pixel_2d());
-    sample.film_position = Vec2((float(x) + 0.5f) + fs.offset.x, (float(y) + 0.5f) + fs.offset.y);
-    sample.filter_weight = fs.weight;
-    // The lens takes a sampler dimension only when there is a lens, so that a pinhole
-    // camera's images stay what they were.
-    const Vec2 u_lens = camera.lens().is_pinhole() ? Vec2() : context.sampler.next_2d();
-    // Likewise time, only when something moves (motion blur): a static scene's images do
-    // not depend on the shutter.
-    const float time = scene.has_motion() ? camera.time(context.sampler.next_1d()) : camera.shutter().open;
-    const Ray ray =
-        camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height), u_lens, time);
+    const LensAndTime lt = start_camera_sample(scene, camera, filter, x, y, index, width, context.sampler, sample);
+    const Ray ray = camera.generate_ray(sample.film_position.x, sample.film_position.y, int(width), int(height),
+                                        lt.u_lens, lt.time);
     context.cone = camera_ray_cone(camera, height, context.sampler.samples_per_axis());
     return ray;
 }
@@ -186,13 +194,25 @@ void Integrator::take_packet_samples(const RenderScene& scene, const Filter& fil
         return TraceContext{.sampler = samplers[k], .first_hit = aovs ? &first_hits[k] : nullptr};
     };
     std::array<TraceContext, RayPacket::kSize> contexts = per_lane(context_of);
+    // The lanes' samples first, then their camera rays all at once (Camera::generate_rays).
+    const Camera& camera = scene.camera();
     std::array<CameraSample, RayPacket::kSize> samples;
-    const std::array<Ray, RayPacket::kSize> camera_rays = per_lane([&](uint32_t k) {
-        if (k >= count) return Ray();
+    std::array<Vec2, RayPacket::kSize> film, u_lens;
+    std::array<float, RayPacket::kSize> times;
+    for (uint32_t k = 0; k < count; ++k) {
         const PixelSample& lane = lanes[k];
-        return camera_ray(scene, scene.camera(), filter, lane.x, lane.y, lane.index, width, height, contexts[k],
-                          samples[k]);
-    });
+        const LensAndTime lt =
+            start_camera_sample(scene, camera, filter, lane.x, lane.y, lane.index, width, samplers[k], samples[k]);
+        film[k] = samples[k].film_position;
+        u_lens[k] = lt.u_lens;
+        times[k] = lt.time;
+    }
+    std::array<Ray, RayPacket::kSize> camera_rays;
+    camera.generate_rays(std::span(film.data(), count), int(width), int(height), std::span(u_lens.data(), count),
+                         std::span(times.data(), count), std::span(camera_rays.data(), count));
+    // The lanes' samplers are copies of the render's one, with its samples per axis.
+    const RayCone cone = camera_ray_cone(camera, height, samplers[0].samples_per_axis());
+    for (uint32_t k = 0; k < count; ++k) contexts[k].cone = cone;
     RayPacket packet;
     for (uint32_t k = 0; k < count; ++k) packet.set(k, camera_rays[k]);
     PacketHits hits;

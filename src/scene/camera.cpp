@@ -106,24 +106,60 @@ void Camera::set_lens(const ThinLens& lens) {
     lens_ = lens;
 }
 
+namespace {
+
+/// Film position (x, y) in pixels as a screen position in [-1, 1]², (-1, -1) bottom-left
+/// (handout §4.2.2).
+[[gnu::always_inline]] inline Vec2 screen_position(float x, float y, int width, int height) {
+    return {2.0f * x / float(width) - 1.0f, 1.0f - 2.0f * y / float(height)};
+}
+
+/// a·b + c in one rounding where the CPU has FMA, in two where it has not (and the compiler
+/// then fuses nothing). Written out where one ray and eight must agree: left to itself, the
+/// compiler fuses different products of a scalar expression than of its vectorised loop.
+[[gnu::always_inline]] inline float multiply_add(float a, float b, float c) {
+#if defined(__FMA__)
+    return std::fma(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
+
+/// normalize(), its dot product written out with multiply_add.
+[[gnu::always_inline]] inline Vec3 unit_vector(const Vec3& v) {
+    const float length = std::sqrt(multiply_add(v.z, v.z, multiply_add(v.y, v.y, v.x * v.x)));
+    return {v.x / length, v.y / length, v.z / length};
+}
+
+}  // namespace
+
+// Inlined into both generate_ray() and generate_rays(), so that one ray and eight get the
+// same arithmetic, hence the same bits.
+[[gnu::always_inline]] inline Vec3 Camera::image_plane_direction(const Basis& b, Vec2 screen, float aspect) const {
+    // forward + (right·sx·aspect + up·sy)·tan(fov/2), each sum fused with its product.
+    const float across = screen.x * aspect;
+    auto axis = [&](int a) {
+        return multiply_add(multiply_add(b.right[a], across, b.up[a] * screen.y), tan_half_fov_, b.forward[a]);
+    };
+    return {axis(0), axis(1), axis(2)};
+}
+
 Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 u_lens, float time) const {
     // A camera that does not move (the common case) keeps its basis in registers: through
     // basis_at's call it came back in memory and was read at once, a store-forwarding stall
     // that cost every camera ray more than the rest of this function.
     const Basis b = keys_.empty() ? Basis{eye_, forward_, right_, up_} : basis_at(time);
-    // Screen position in [-1, 1]², (-1, -1) bottom-left (handout §4.2.2).
-    const float sx = 2.0f * x / float(width) - 1.0f;
-    const float sy = 1.0f - 2.0f * y / float(height);
+    const Vec2 s = screen_position(x, y, width, height);
     const float aspect = float(width) / float(height);
     Vec3 origin = b.eye, direction = b.forward;
     if (projection_ == Projection::Orthographic) {
         const float half_h = 0.5f * view_height_;
-        origin = b.eye + b.right * (sx * half_h * aspect) + b.up * (sy * half_h);
+        origin = b.eye + b.right * (s.x * half_h * aspect) + b.up * (s.y * half_h);
     } else {
-        direction = b.forward + (b.right * (sx * aspect) + b.up * sy) * tan_half_fov_;
+        direction = image_plane_direction(b, s, aspect);
     }
     if (lens_.is_pinhole())
-        return {origin, projection_ == Projection::Orthographic ? b.forward : normalize(direction), 0.0f, kInfinity,
+        return {origin, projection_ == Projection::Orthographic ? b.forward : unit_vector(direction), 0.0f, kInfinity,
                 time};
     // The pinhole ray meets the plane of focus at origin + direction·focus_distance (its
     // direction has unit length along forward); the lens ray leaves from a point of the
@@ -132,6 +168,36 @@ Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 u_lens, f
     const Vec2 a = lens_.sample_aperture(u_lens);
     const Vec3 from = origin + b.right * a.x + b.up * a.y;
     return {from, normalize(focus - from), 0.0f, kInfinity, time};
+}
+
+void Camera::generate_rays(std::span<const Vec2> film, int width, int height, std::span<const Vec2> u_lens,
+                           std::span<const float> times, std::span<Ray> rays) const {
+    if (projection_ != Projection::Perspective || !lens_.is_pinhole() || moves()) {
+        for (std::size_t k = 0; k < film.size(); ++k)
+            rays[k] = generate_ray(film[k].x, film[k].y, width, height, u_lens[k], times[k]);
+        return;
+    }
+    const Basis b{eye_, forward_, right_, up_};
+    // Eight lanes in plain arrays (a short batch padded with the film's corner), one loop
+    // over all eight that the compiler vectorises.
+    constexpr std::size_t kBatch = 8;
+    for (std::size_t first = 0; first < film.size(); first += kBatch) {
+        const std::size_t count = std::min(kBatch, film.size() - first);
+        alignas(32) float x[kBatch] = {}, y[kBatch] = {}, dx[kBatch], dy[kBatch], dz[kBatch];
+        for (std::size_t k = 0; k < count; ++k) {
+            x[k] = film[first + k].x;
+            y[k] = film[first + k].y;
+        }
+        const float aspect = float(width) / float(height);
+        for (std::size_t k = 0; k < kBatch; ++k) {
+            const Vec3 d = unit_vector(image_plane_direction(b, screen_position(x[k], y[k], width, height), aspect));
+            dx[k] = d.x;
+            dy[k] = d.y;
+            dz[k] = d.z;
+        }
+        for (std::size_t k = 0; k < count; ++k)
+            rays[first + k] = Ray(b.eye, Vec3(dx[k], dy[k], dz[k]), 0.0f, kInfinity, times[first + k]);
+    }
 }
 
 std::optional<Vec2> Camera::project(const Vec3& p, int width, int height) const {

@@ -181,6 +181,16 @@ private:
     /// context.cone, and leaves the sampler where Li() takes over.
     Ray camera_ray(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x, uint32_t y,
                    uint32_t index, uint32_t width, uint32_t height, TraceContext& context, CameraSample& sample) const;
+    /// The point of the camera's lens and the time a camera ray takes.
+    struct LensAndTime {
+        Vec2 u_lens;
+        float time = 0.0f;
+    };
+    /// camera_ray() up to the ray itself: draws `sample`'s position and filter weight, then
+    /// the lens point and time where the scene needs them (Camera::generate_ray's arguments).
+    LensAndTime start_camera_sample(const RenderScene& scene, const Camera& camera, const Filter& filter, uint32_t x,
+                                    uint32_t y, uint32_t index, uint32_t width, Sampler& sampler,
+                                    CameraSample& sample) const;
     /// take_sample() for each of `lanes` (at most RayPacket::kSize), their camera rays traced
     /// as one packet; lane k draws from `samplers[k]`. Each sample, with its radiance and
     /// (with `aovs`) its camera ray's first hit, goes to `add(x, y, sample, first_hit)`, in

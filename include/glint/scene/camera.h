@@ -7,6 +7,7 @@
 #include "glint/scene/thin_lens.h"
 
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace glint {
@@ -67,6 +68,13 @@ public:
     /// from (ThinLens::sample_aperture); a pinhole ignores it. The ray carries `time`, and a
     /// moving camera is where it is then.
     [[nodiscard]] Ray generate_ray(float x, float y, int width, int height, Vec2 u_lens = {}, float time = 0.0f) const;
+    /// generate_ray() for each film position at once: rays[k] is the ray through film[k] with
+    /// lens point u_lens[k] at times[k], bit for bit. A still perspective pinhole camera (the
+    /// common case) makes them eight at a time with SIMD, so that the division, square root
+    /// and division of a ray's direction overlap instead of following one another: the
+    /// render's packets of camera rays (docs/performance.md). All four spans have one size.
+    void generate_rays(std::span<const Vec2> film, int width, int height, std::span<const Vec2> u_lens,
+                       std::span<const float> times, std::span<Ray> rays) const;
     /// Where world point `p` appears on a `width`×`height` film: the (x, y) that
     /// generate_ray() turns into a ray through `p` (for a lens: the ray from the aperture's
     /// centre; a moving camera's place at its first key); none for a point behind the eye. Used to
@@ -96,6 +104,9 @@ private:
     /// Throws std::invalid_argument for a degenerate view.
     [[nodiscard]] static Basis make_basis(const Vec3& eye, const Vec3& target, const Vec3& up);
     [[nodiscard]] Basis basis_at(float time) const;
+    /// The direction (not unit length) of a perspective camera's ray through a screen
+    /// position in [-1, 1]²: the point of the image plane at distance 1.
+    [[nodiscard]] Vec3 image_plane_direction(const Basis& b, Vec2 screen, float aspect) const;
 
     Projection projection_ = Projection::Perspective;
     Vec3 eye_, forward_, right_, up_;
