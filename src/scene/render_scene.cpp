@@ -9,6 +9,7 @@
 namespace glint {
 
 RenderScene::RenderScene(Scene description) : scene_(std::move(description)) {
+    scene_.place_meshes_in_world();
     const std::vector<SceneObject>& objects = scene_.objects();
     std::vector<Shape*> unique;
     {

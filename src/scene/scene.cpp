@@ -1,7 +1,12 @@
 #include "glint/scene/scene.h"
 
+#include "glint/geometry/triangle_mesh.h"
+
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace glint {
 
@@ -80,6 +85,32 @@ void Scene::set_motion(uint32_t index, AnimatedTransform motion) {
     o.world_from_object = motion.keys().front().transform;
     o.has_transform = true;
     o.motion = std::move(motion);
+}
+
+void Scene::place_meshes_in_world() {
+    std::unordered_map<const Shape*, uint32_t> placements;
+    for (const SceneObject& o : objects_) ++placements[o.shape.get()];
+    std::vector<SceneObject*> chosen;
+    for (SceneObject& o : objects_)
+        if (o.has_transform && !o.motion && placements[o.shape.get()] == 1 && !o.world_from_object.swaps_handedness() &&
+            dynamic_cast<TriangleMesh*>(o.shape.get()))
+            chosen.push_back(&o);
+    tbb::parallel_for(size_t(0), chosen.size(), [&](size_t k) {
+        SceneObject& o = *chosen[k];
+        auto& mesh = static_cast<TriangleMesh&>(*o.shape);
+        try {
+            // Held by this scene alone, the mesh is carried where it is; held elsewhere too
+            // (by the program that made it, say), it is copied first.
+            if (o.shape.use_count() == 1)
+                mesh.transform_vertices(o.world_from_object);
+            else
+                o.shape = mesh.placed(o.world_from_object);
+        } catch (const std::invalid_argument&) {
+            return;  // it would leave float range: it stays a placement
+        }
+        o.world_from_object = Transform();
+        o.has_transform = false;
+    });
 }
 
 bool Scene::has_motion() const {

@@ -5,10 +5,12 @@
 #include "glint/geometry/shape.h"
 #include "glint/geometry/tangent_space.h"
 #include "glint/materials/texture.h"
+#include "glint/math/transform.h"
 #include "glint/math/vec2.h"
 #include "glint/sampling/discrete_distribution.h"
 #include "glint/util/large_array.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,6 +85,15 @@ public:
     /// skipped by every query, shadow rays too. Needs uvs; null removes the mask.
     void set_alpha_mask(const Texture* alpha, float cutoff) { alpha_mask_ = alpha; alpha_cutoff_ = cutoff; }
     [[nodiscard]] const Texture* alpha_mask() const { return alpha_mask_; }
+
+    /// Carries the mesh by `world_from_object` (affine; one that mirrors would turn the
+    /// triangles' winding, so callers keep those as placements): positions, and normals and
+    /// tangents turned with them. Drops the BVH and the sampling table, which prepare() and
+    /// prepare_sampling() make again. Throws std::invalid_argument, leaving the mesh as it
+    /// was, where a position would leave float range.
+    void transform_vertices(const Transform& world_from_object);
+    /// A copy of this mesh, alpha mask included, carried by transform_vertices().
+    [[nodiscard]] std::shared_ptr<TriangleMesh> placed(const Transform& world_from_object) const;
 
     /// Test one triangle with the watertight test, alpha mask included: the scalar
     /// reference for the BVH's SIMD leaves (brute-force tests call it).

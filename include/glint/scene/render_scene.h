@@ -1,7 +1,8 @@
 #pragma once
 /// \file What the integrators read: a scene prepared for rendering. Made once from a
-/// Scene description, which it keeps read-only; to render a changed scene, prepare the
-/// changed description again. Integrators take nothing else, so nothing can be rendered
+/// Scene description, which it keeps read-only once its singly placed meshes are in world
+/// space (Scene::place_meshes_in_world); to render a changed scene, prepare the changed
+/// description again. Integrators take nothing else, so nothing can be rendered
 /// unprepared and no change after preparing can be silently ignored.
 
 #include "glint/accel/ray_packet.h"

@@ -111,6 +111,13 @@ public:
     /// sampling assumes lights stay put, as pbrt-v4's does. (One made a light afterwards, by
     /// turning emission_lights on, is seen but never sampled.)
     void set_motion(uint32_t object, AnimatedTransform motion);
+    /// The same scene with fewer transforms: each triangle mesh that one still object alone
+    /// places is carried into world space and the object's transform becomes the identity,
+    /// so that no ray and no hit on it pays for a transform (pbrt-v4 likewise keeps only
+    /// instanced meshes in object space). A mesh held elsewhere too is copied first;
+    /// mirroring placements, which would turn the triangles' winding, and placements that
+    /// would leave float range stay as they are. RenderScene does this first.
+    void place_meshes_in_world();
     /// True if an object moves or the camera does: then camera rays need a time.
     [[nodiscard]] bool has_motion() const;
     /// Place `shape` as an area light emitting `emitter.radiance` (a black material of its
