@@ -11,8 +11,8 @@ namespace glint {
 
 namespace {
 
-/// The lanes of `packet` in `lanes`, as another packet: carried into an object's space by
-/// `into_object(const Ray&) -> Ray` (t is kept), or as they are.
+/// The lanes of `packet` in `lanes`, as another packet carried into an object's space by
+/// `into_object(const Ray&) -> Ray` (t is kept).
 template <class IntoObject>
 RayPacket lanes_of(const RayPacket& packet, uint32_t lanes, const IntoObject& into_object) {
     RayPacket local;
@@ -36,9 +36,15 @@ uint32_t RenderScene::intersect_object_packet(uint32_t index, RayPacket& packet,
         hit_lanes =
             intersect_lane_by_lane(packet, hits, [&](Ray& ray, Hit& hit) { return intersect_object(index, ray, hit); });
         packet.active = active;
+    } else if (!o.transformed) {
+        // In world space already (Scene::place_meshes_in_world): the shape takes the packet
+        // itself, with the other lanes set aside, and shrinks the tmax of the lanes it hits.
+        const uint32_t active = packet.active;
+        packet.active = lanes;
+        hit_lanes = o.shape->intersect_packet(packet, hits);
+        packet.active = active;
     } else {
-        RayPacket local = o.transformed ? lanes_of(packet, lanes, [&](const Ray& r) { return o.object_from_world.ray(r); })
-                                        : lanes_of(packet, lanes, [](const Ray& r) { return r; });
+        RayPacket local = lanes_of(packet, lanes, [&](const Ray& r) { return o.object_from_world.ray(r); });
         hit_lanes = o.shape->intersect_packet(local, hits);
         for (uint32_t hit = hit_lanes; hit; hit &= hit - 1) {
             const auto lane = static_cast<uint32_t>(std::countr_zero(hit));
@@ -61,7 +67,10 @@ uint32_t RenderScene::occluded_by_object_packet(uint32_t index, const RayPacket&
     if (o.transformed)
         return o.shape->occluded_packet(
             lanes_of(packet, lanes, [&](const Ray& r) { return o.object_from_world.ray(r); }));
-    return o.shape->occluded_packet(lanes_of(packet, lanes, [](const Ray& r) { return r; }));
+    // A copy of the packet whole, not lane by lane.
+    RayPacket world = packet;
+    world.active = lanes;
+    return o.shape->occluded_packet(world);
 }
 
 template <bool AnyHit, class Visit>
