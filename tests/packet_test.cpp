@@ -263,8 +263,8 @@ TEST(QuadPackets, EveryLaneGetsWhatItsRayGetsAlone) {
 }
 
 /// A scene of `copies` placements of the icosphere (turned, stretched, one mirrored; the
-/// first of glass, which shadow rays pass under DielectricShadows::None), with `sphere` a
-/// sphere, an icosphere of its own (carried into world space when prepared) and a floor
+/// first of glass, which shadow rays pass under DielectricShadows::None), a sphere if
+/// `sphere`, an icosphere of its own (carried into world space when prepared) and a floor
 /// quad placed twice (as it is, and turned); with `moving`, one placement moves during the
 /// shutter.
 RenderScene placed_scene(int copies, bool moving, bool sphere = true) {

@@ -135,10 +135,11 @@ TEST(PlaceMeshesInWorld, AMeshHeldElsewhereIsCopiedNotChanged) {
     EXPECT_FALSE(o.has_transform);
     ASSERT_NE(o.shape.get(), mesh.get());
     const MeshData original = uv_sphere_with_normals();
+    const Transform t = placement();
     const auto& copy = static_cast<const TriangleMesh&>(*o.shape);
     for (size_t i = 0; i < original.positions.size(); ++i) {
         ASSERT_EQ(mesh->data().positions[i], original.positions[i]) << "vertex " << i;
-        ASSERT_EQ(copy.data().positions[i], placement().point(original.positions[i])) << "vertex " << i;
+        ASSERT_EQ(copy.data().positions[i], t.point(original.positions[i])) << "vertex " << i;
     }
 }
 

@@ -19,11 +19,6 @@ float corner_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
     return std::acos(std::clamp(dot(e1, e2) / (l1 * l2), -1.0f, 1.0f));
 }
 
-Vec3 unit_or_zero(const Vec3& v) {
-    const float l = length(v);
-    return l > 0.0f && std::isfinite(l) ? v / l : Vec3();
-}
-
 }  // namespace
 
 LargeArray<Tangent> compute_tangents(const MeshData& data) {

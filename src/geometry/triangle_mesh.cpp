@@ -20,12 +20,6 @@ namespace {
 
 std::string mesh_label(const std::string& name) { return name.empty() ? "mesh" : "mesh '" + name + "'"; }
 
-/// `v` made unit length; zero stays zero.
-Vec3 unit_or_zero(const Vec3& v) {
-    const float len = length(v);
-    return (len > 0.0f && std::isfinite(len)) ? v / len : Vec3(0.0f);
-}
-
 }  // namespace
 
 TriangleMesh::TriangleMesh(MeshData data, std::string name) : data_(std::move(data)), name_(std::move(name)) {
@@ -64,7 +58,8 @@ void TriangleMesh::prepare() {
 }
 
 void TriangleMesh::transform_vertices(const Transform& world_from_object) {
-    // In parallel: for the 871k-triangle dragon this is start-up time.
+    // In parallel: for the 871k-triangle dragon this is start-up time. Checked in one pass
+    // and written in a second, so that a throw leaves the mesh as it was.
     std::atomic<bool> out_of_range{false};
     const Bounds3 bounds = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, data_.positions.size(), 16384), Bounds3(),

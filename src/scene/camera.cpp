@@ -181,6 +181,7 @@ void Camera::generate_rays(std::span<const Vec2> film, int width, int height, st
     // Eight lanes in plain arrays (a short batch padded with the film's corner), one loop
     // over all eight that the compiler vectorises.
     constexpr std::size_t kBatch = 8;
+    const float aspect = float(width) / float(height);
     for (std::size_t first = 0; first < film.size(); first += kBatch) {
         const std::size_t count = std::min(kBatch, film.size() - first);
         alignas(32) float x[kBatch] = {}, y[kBatch] = {}, dx[kBatch], dy[kBatch], dz[kBatch];
@@ -188,7 +189,6 @@ void Camera::generate_rays(std::span<const Vec2> film, int width, int height, st
             x[k] = film[first + k].x;
             y[k] = film[first + k].y;
         }
-        const float aspect = float(width) / float(height);
         for (std::size_t k = 0; k < kBatch; ++k) {
             const Vec3 d = unit_vector(image_plane_direction(b, screen_position(x[k], y[k], width, height), aspect));
             dx[k] = d.x;

@@ -43,6 +43,11 @@ constexpr Vec3 operator*(float s, const Vec3& v) { return v * s; }
 [[nodiscard]] constexpr float length_squared(const Vec3& v) { return dot(v, v); }
 [[nodiscard]] inline float length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 [[nodiscard]] inline Vec3 normalize(const Vec3& v) { return v / length(v); }
+/// `v` made unit length; a zero (or non-finite) length gives the zero vector.
+[[nodiscard]] inline Vec3 unit_or_zero(const Vec3& v) {
+    const float l = length(v);
+    return l > 0.0f && std::isfinite(l) ? v / l : Vec3();
+}
 [[nodiscard]] inline Vec3 min(const Vec3& a, const Vec3& b) {
     return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
 }
