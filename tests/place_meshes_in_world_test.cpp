@@ -4,8 +4,11 @@
 // held elsewhere is never changed under its holder.
 
 #include "glint/geometry/triangle_mesh.h"
+#include "glint/materials/texture.h"
+
 #include "glint/math/animated_transform.h"
 #include "glint/scene/render_scene.h"
+#include "uv_sphere_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -16,26 +19,9 @@
 namespace glint {
 namespace {
 
-/// A latitude-longitude sphere of radius 1 with normals and texture coordinates, so that the
-/// mesh has tangents too.
-MeshData uv_sphere_with_normals() {
-    constexpr int kRings = 48, kSegments = 96;
-    MeshData m;
-    for (int r = 0; r <= kRings; ++r)
-        for (int s = 0; s <= kSegments; ++s) {
-            const float theta = kPi * float(r) / kRings, phi = 2.0f * kPi * float(s) / kSegments;
-            const Vec3 p(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-            m.positions.push_back(p);
-            m.normals.push_back(p);
-            m.uvs.push_back(Vec2(float(s) / kSegments, float(r) / kRings));
-        }
-    for (int r = 0; r < kRings; ++r)
-        for (int s = 0; s < kSegments; ++s) {
-            const auto a = uint32_t(r * (kSegments + 1) + s), b = a + kSegments + 1;
-            m.indices.insert(m.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
-        }
-    return m;
-}
+/// The test sphere, fine enough that interpolating normals in world or object space differs
+/// by little.
+MeshData uv_sphere_with_normals() { return glint_test::uv_sphere_mesh(48, 96); }
 
 /// Turned, squashed unevenly and moved: normals must turn by the inverse transpose.
 Transform placement() {
@@ -43,9 +29,14 @@ Transform placement() {
            Transform::scale({2.0f, 0.5f, 1.5f});
 }
 
+/// A scene with one textured material, so that hits carry their texture coordinates, tangents
+/// and curvature (RenderScene::reads_texture_coordinates), which the tests compare too.
 Scene scene_with_material() {
+    static const CheckerTexture checks(Color(1.0f), Color(0.0f), 4.0f);
     Scene scene;
-    scene.add_material(Material{});
+    Material textured;
+    textured.texture = &checks;
+    scene.add_material(textured);
     return scene;
 }
 

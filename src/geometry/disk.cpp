@@ -52,10 +52,12 @@ bool Disk::occluded(const Ray& ray) const {
     return hit_parameters(ray, t, x, y);
 }
 
-void Disk::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
+void Disk::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si, InteractionDetail detail) const {
     si.p = center_ + tangent_ * hit.u + bitangent_ * hit.v;
     si.geometric_normal = normal_;
     si.shading_normal = normal_;
+    si.front_face = dot(ray.direction, normal_) < 0.0f;
+    if (detail == InteractionDetail::WithoutTextureCoordinates) return;
     float phi = std::atan2(hit.v, hit.u);
     if (phi < 0.0f) phi += 2.0f * kPi;
     const float rho = std::sqrt(hit.u * hit.u + hit.v * hit.v);
@@ -64,7 +66,6 @@ void Disk::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) c
     const Vec3 radial = tangent_ * std::cos(phi) + bitangent_ * std::sin(phi);
     si.dpdu = radial * radius_;
     si.dpdv = cross(normal_, radial) * (2.0f * kPi * rho);
-    si.front_face = dot(ray.direction, normal_) < 0.0f;
 }
 
 float Disk::area() const { return kPi * radius_ * radius_; }

@@ -113,7 +113,7 @@ bool Heightfield::occluded(const Ray& ray) const {
     return traverse(r, scratch);
 }
 
-void Heightfield::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
+void Heightfield::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si, InteractionDetail detail) const {
     const uint32_t cell = hit.primitive / 2;
     const uint32_t i = cell % (nx_ - 1), j = cell / (nx_ - 1);
     const bool second = hit.primitive % 2 == 1;
@@ -126,16 +126,17 @@ void Heightfield::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction
     const Vec3 ns = vertex_normal(ci[0][0], ci[0][1]) * b0 + vertex_normal(ci[1][0], ci[1][1]) * b1 +
                     vertex_normal(ci[2][0], ci[2][1]) * b2;
     si.shading_normal = face_forward(normalize(ns), ng);
+    si.front_face = dot(ray.direction, ng) < 0.0f;
+    if (detail == InteractionDetail::WithoutTextureCoordinates) return;
     const Vec2 extent(max_.x - min_.x, max_.y - min_.y);
     auto uv_of = [&](const Vec3& p) { return Vec2((p.x - min_.x) / extent.x, (p.z - min_.y) / extent.y); };
     si.uv = uv_of(si.p);
     const TriangleDerivatives derivatives = triangle_derivatives(p0, p1, p2, uv_of(p0), uv_of(p1), uv_of(p2));
     si.dpdu = derivatives.dpdu;
     si.dpdv = derivatives.dpdv;
-    si.curvature = triangle_curvature(p0, p1, p2, normalize(vertex_normal(ci[0][0], ci[0][1])),
-                                      normalize(vertex_normal(ci[1][0], ci[1][1])),
-                                      normalize(vertex_normal(ci[2][0], ci[2][1])));
-    si.front_face = dot(ray.direction, ng) < 0.0f;
+    si.curvature =
+        triangle_curvature(p0, p1, p2, normalize(vertex_normal(ci[0][0], ci[0][1])),
+                           normalize(vertex_normal(ci[1][0], ci[1][1])), normalize(vertex_normal(ci[2][0], ci[2][1])));
 }
 
 std::size_t Heightfield::memory_bytes() const { return sizeof(*this) + heights_.size() * sizeof(float); }

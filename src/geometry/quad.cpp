@@ -87,7 +87,8 @@ uint32_t Quad::intersect_packet(RayPacket& packet, PacketHits& hits) const {
 
 uint32_t Quad::occluded_packet(const RayPacket& packet) const { return hit_lanes(packet).lanes & packet.active; }
 
-void Quad::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
+void Quad::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si, InteractionDetail) const {
+    // Texture coordinates cost nothing here: set at every detail.
     si.p = corner_ + edge_u_ * hit.u + edge_v_ * hit.v;
     si.geometric_normal = normal_;
     si.shading_normal = normal_;

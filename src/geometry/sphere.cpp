@@ -63,12 +63,14 @@ bool Sphere::occluded(const Ray& ray) const {
     return (t0 > ray.tmin && t0 < ray.tmax) || (t1 > ray.tmin && t1 < ray.tmax);
 }
 
-void Sphere::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
+void Sphere::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si, InteractionDetail detail) const {
     const Vec3 n = normalize(ray.at(hit.t) - center_);
     // Project the point onto the surface: removes the error of t along the ray.
     si.p = center_ + n * radius_;
     si.geometric_normal = n;
     si.shading_normal = n;
+    si.front_face = dot(ray.direction, n) < 0.0f;
+    if (detail == InteractionDetail::WithoutTextureCoordinates) return;
     si.uv = uv_of(n);
     // p = c + r·(sinθ cosφ, cosθ, sinθ sinφ) with u = φ/2π, v = θ/π (uv_of).
     const float sin_theta = std::sqrt(n.x * n.x + n.z * n.z);
@@ -76,7 +78,6 @@ void Sphere::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si)
     si.dpdv = sin_theta > 1e-6f ? Vec3(n.y * n.x / sin_theta, -sin_theta, n.y * n.z / sin_theta) * (kPi * radius_)
                                 : Vec3(kPi * radius_, 0.0f, 0.0f);
     si.curvature = 1.0f / radius_;
-    si.front_face = dot(ray.direction, n) < 0.0f;
 }
 
 Vec2 Sphere::uv_of(const Vec3& n) {

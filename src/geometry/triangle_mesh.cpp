@@ -159,7 +159,7 @@ bool TriangleMesh::occluded_counted(const Ray& ray, TraversalStats& stats) const
         r, scratch, [this](uint32_t tri, float b1, float b2) { return passes_alpha(tri, b1, b2); }, count);
 }
 
-void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const {
+void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si, InteractionDetail detail) const {
     const uint32_t* idx = &data_.indices[3 * size_t(hit.primitive)];
     const float b1 = hit.u, b2 = hit.v, b0 = 1.0f - b1 - b2;
     const Vec3& p0 = data_.positions[idx[0]];
@@ -176,6 +176,14 @@ void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteractio
         if (len > 0.0f) ns = face_forward(interpolated / len, ng);
     }
     si.shading_normal = ns;
+    if (!data_.colors.empty())
+        si.vertex_color = data_.colors[idx[0]] * b0 + data_.colors[idx[1]] * b1 + data_.colors[idx[2]] * b2;
+    if (!data_.vertex_materials.empty()) {
+        si.blends_materials = true;
+        si.materials = {data_.vertex_materials[idx[0]], data_.vertex_materials[idx[1]], data_.vertex_materials[idx[2]]};
+        si.material_weights = {b0, b1, b2};
+    }
+    if (detail == InteractionDetail::WithoutTextureCoordinates) return;
     if (!data_.normals.empty())  // unit since construction
         si.curvature =
             triangle_curvature(p0, p1, p2, data_.normals[idx[0]], data_.normals[idx[1]], data_.normals[idx[2]]);
@@ -193,13 +201,6 @@ void TriangleMesh::interaction(const Ray& ray, const Hit& hit, SurfaceInteractio
     const TriangleDerivatives derivatives = triangle_derivatives(p0, p1, p2, uv0, uv1, uv2);
     si.dpdu = derivatives.dpdu;
     si.dpdv = derivatives.dpdv;
-    if (!data_.colors.empty())
-        si.vertex_color = data_.colors[idx[0]] * b0 + data_.colors[idx[1]] * b1 + data_.colors[idx[2]] * b2;
-    if (!data_.vertex_materials.empty()) {
-        si.blends_materials = true;
-        si.materials = {data_.vertex_materials[idx[0]], data_.vertex_materials[idx[1]], data_.vertex_materials[idx[2]]};
-        si.material_weights = {b0, b1, b2};
-    }
 }
 
 void TriangleMesh::prepare_sampling() {

@@ -74,8 +74,10 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
             break;
         }
         SurfaceInteraction si = scene.interaction(r, hit);
-        cone = cone.at(r.tmax * length(ray.direction));
-        si.uv_footprint = cone.uv_footprint(si, ray.direction);
+        if (scene.reads_texture_coordinates()) {
+            cone = cone.at(r.tmax * length(ray.direction));
+            si.uv_footprint = cone.uv_footprint(si, ray.direction);
+        }
         // Inside an absorbing dielectric the path loses exp(−σa·d) on the way here.
         throughput *= transmittance(scene, media, r.tmax);
         // Only hits on per-vertex materials pay for a blended copy.
@@ -139,7 +141,7 @@ Color PathIntegrator::Li(const RenderScene& scene, const Ray& camera_ray, TraceC
         bsdf_pdf = bs->pdf;
         previous_point = si.p;
         previous_normal = sp.n;
-        cone = cone.bounced(si.curvature);
+        if (scene.reads_texture_coordinates()) cone = cone.bounced(si.curvature);
         if (bs->flags & kBsdfTransmission) {
             media = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
             ray = Ray(offset_ray_origin(si.p, -sp.ng), bs->wi, 0.0f, kInfinity, si.time);

@@ -254,10 +254,12 @@ template <bool Record, bool KnownShadows>
 Color WhittedIntegrator::shade_hit(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfaceInteraction& si,
                                    uint32_t depth, const IorStack& media, int32_t node, TraceContext& context) const {
     // The ray's cone where it hit sets the texture footprint; the rays leaving here carry it
-    // on, bounced (shade restores it for each).
-    const RayCone cone = context.cone.at(hit.t * length(ray.direction));
-    si.uv_footprint = cone.uv_footprint(si, ray.direction);
-    context.cone = cone.bounced(si.curvature);
+    // on, bounced (shade restores it for each). Only textures read it.
+    if (scene.reads_texture_coordinates()) {
+        const RayCone cone = context.cone.at(hit.t * length(ray.direction));
+        si.uv_footprint = cone.uv_footprint(si, ray.direction);
+        context.cone = cone.bounced(si.curvature);
+    }
     if constexpr (Record) context.tree->set_hit(node, hit.t, hit.object, si.materials[0], Vec3());
     // Inside an absorbing dielectric the radiance from the hit loses exp(−σa·d) on the way.
     const Color kept = transmittance(scene, media, hit.t);

@@ -22,8 +22,9 @@ public:
     /// from just beyond it (a sphere's far side, a heightfield's next fold).
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
-    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override {
-        shape_->interaction(ray, hit, si);
+    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                     InteractionDetail detail = InteractionDetail::Full) const override {
+        shape_->interaction(ray, hit, si, detail);
     }
     void prepare() override { shape_->prepare(); }
     /// Area and sampling are the whole shape's: a cut-out emitter is sampled where it is cut

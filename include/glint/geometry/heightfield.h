@@ -26,7 +26,8 @@ public:
     [[nodiscard]] Bounds3 bounds() const override { return bounds_; }
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
-    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                     InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] std::size_t primitive_count() const override { return 2u * (nx_ - 1) * (nz_ - 1); }
     /// Two per cell, as primitive_count().
     [[nodiscard]] std::size_t triangle_count() const override { return primitive_count(); }

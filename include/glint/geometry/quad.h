@@ -23,7 +23,8 @@ public:
     /// with what its ray gets alone, bit for bit.
     uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const override;
     [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet) const override;
-    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                     InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] float area() const override { return area_; }
     [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
     [[nodiscard]] std::size_t memory_bytes() const override { return sizeof(*this); }

@@ -29,6 +29,18 @@ struct ShapeSample {
     float pdf = 0.0f;
 };
 
+/// How much of a SurfaceInteraction a caller needs, as Mitsuba 3's RayFlags let a caller ask
+/// for less. Texture coordinates, ∂p/∂u, ∂p/∂v, the tangent and the curvature serve only
+/// texture lookups (and the ray cones that size them), so a scene without textures never
+/// reads them; a sphere pays an atan2 and an acos for its uv.
+enum class InteractionDetail {
+    /// Everything SurfaceInteraction holds.
+    Full,
+    /// The point, normals, side, vertex colour and materials; the shape may leave uv, dpdu,
+    /// dpdv, tangent and curvature at their defaults.
+    WithoutTextureCoordinates,
+};
+
 /// A shape lives in its own object space; the scene places it with a transform
 /// (several placements of one shape share its data: instancing). A shape with
 /// many primitives (a mesh) keeps its own acceleration structure, built in
@@ -72,9 +84,11 @@ public:
         return occluded(ray);
     }
 
-    /// Full surface description in object space for a hit this shape reported.
-    /// `si.materials` is left to the caller unless the shape has per-vertex materials.
-    virtual void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const = 0;
+    /// Full surface description in object space for a hit this shape reported (with
+    /// `detail`, possibly less: see InteractionDetail). `si.materials` is left to the caller
+    /// unless the shape has per-vertex materials.
+    virtual void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                             InteractionDetail detail = InteractionDetail::Full) const = 0;
 
     /// Build internal acceleration data. Called once by Scene::prepare(), possibly in parallel
     /// with other shapes' prepare().

@@ -17,7 +17,8 @@ public:
     [[nodiscard]] Bounds3 bounds() const override;
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
-    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                     InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] float area() const override;
     [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
     /// From outside: uniform over the cone of directions the sphere subtends (pbrt-v4 §6.2.4),

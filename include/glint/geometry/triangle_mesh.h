@@ -65,7 +65,8 @@ public:
     [[nodiscard]] bool traces_packets() const override { return !has_alpha_mask(); }
     bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
     [[nodiscard]] bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
-    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si) const override;
+    void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                     InteractionDetail detail = InteractionDetail::Full) const override;
     void prepare() override;
     [[nodiscard]] float area() const override;
     /// A triangle chosen by area (needs prepare_sampling()), then a uniform point in it.

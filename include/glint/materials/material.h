@@ -76,6 +76,10 @@ struct Material {
     Color dielectric_f0{0.04f};
 
     [[nodiscard]] bool is_dielectric() const { return transparency > 0.0f; }
+    /// Whether any of the textures above is set: only they read a hit's texture coordinates.
+    [[nodiscard]] bool has_textures() const {
+        return texture || emission_texture || normal_texture || alpha_texture || metallic_roughness_texture;
+    }
 
     /// The scene-file factory of `type = "standard"` (docs/scene-format.md): every key
     /// above but `name`; throws SceneError at a bad one.

@@ -102,6 +102,10 @@ public:
     /// Whether camera rays need a time: something moves (Scene::has_motion). A scene where
     /// nothing moves draws no time sample, so a shutter changes none of its pixels.
     [[nodiscard]] bool has_motion() const { return has_motion_; }
+    /// Whether a hit's texture coordinates are ever read: some material has a texture
+    /// (Material::has_textures). Without, interaction() leaves them out (InteractionDetail)
+    /// and the integrators follow no ray cones for texture footprints.
+    [[nodiscard]] bool reads_texture_coordinates() const { return reads_texture_coordinates_; }
 
 private:
     /// What a ray query needs of an object, packed for the top-level traversal; the rest
@@ -161,6 +165,7 @@ private:
     };
     std::vector<FewObject> few_objects_;
     bool has_motion_ = false;
+    bool reads_texture_coordinates_ = true;
     bool packets_pay_ = false;
 };
 
