@@ -8,6 +8,8 @@
 #include "glint/scene/render_scene.h"
 #include "glint/scene/scene.h"
 
+#include "test_rays.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,15 +17,6 @@
 #include <random>
 
 using namespace glint;
-
-namespace {
-
-Vec3 random_unit(std::mt19937& rng) {
-    std::normal_distribution<float> g;
-    return normalize(Vec3(g(rng), g(rng), g(rng)));
-}
-
-}  // namespace
 
 // ---- Sphere ---------------------------------------------------------------------------
 
@@ -102,15 +95,15 @@ TEST(Sphere, ReintersectFromOffsetOriginNeverHitsAgain) {
     int hits = 0;
     for (int i = 0; i < 1000; ++i) {
         const float radius = u(rng);
-        const Sphere s(random_unit(rng) * u(rng), radius);
-        Ray r(s.center() + random_unit(rng) * (radius * 3.0f), {});
-        r.direction = normalize(s.center() - r.origin + random_unit(rng) * (radius * 0.5f));
+        const Sphere s(glint_test::random_unit_vector(rng) * u(rng), radius);
+        Ray r(s.center() + glint_test::random_unit_vector(rng) * (radius * 3.0f), {});
+        r.direction = normalize(s.center() - r.origin + glint_test::random_unit_vector(rng) * (radius * 0.5f));
         Hit h;
         if (!s.intersect(r, h)) continue;
         ++hits;
         SurfaceInteraction si;
         s.interaction(r, h, si);
-        Vec3 out = random_unit(rng);
+        Vec3 out = glint_test::random_unit_vector(rng);
         if (dot(out, si.geometric_normal) < 0.0f) out = -out;
         Ray again(offset_ray_origin(si.p, si.geometric_normal), out);
         Hit h2;

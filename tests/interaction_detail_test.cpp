@@ -13,6 +13,7 @@
 #include "glint/materials/texture.h"
 #include "glint/scene/render_scene.h"
 
+#include "test_rays.h"
 #include "uv_sphere_mesh.h"
 
 #include <gtest/gtest.h>
@@ -26,22 +27,14 @@
 namespace glint {
 namespace {
 
-Vec3 random_unit(std::mt19937& rng) {
-    std::normal_distribution<float> g;
-    return normalize(Vec3(g(rng), g(rng), g(rng)));
-}
-
-bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-bool same(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
-
 /// Everything but what only texture lookups read (uv, dpdu, dpdv, tangent, curvature and
 /// the footprint) agrees bit for bit.
 void expect_same_geometry(const SurfaceInteraction& full, const SurfaceInteraction& reduced, const std::string& what) {
-    EXPECT_TRUE(same(full.p, reduced.p)) << what;
-    EXPECT_TRUE(same(full.geometric_normal, reduced.geometric_normal)) << what;
-    EXPECT_TRUE(same(full.shading_normal, reduced.shading_normal)) << what;
+    EXPECT_EQ(full.p, reduced.p) << what;
+    EXPECT_EQ(full.geometric_normal, reduced.geometric_normal) << what;
+    EXPECT_EQ(full.shading_normal, reduced.shading_normal) << what;
     EXPECT_EQ(full.front_face, reduced.front_face) << what;
-    EXPECT_TRUE(same(full.vertex_color, reduced.vertex_color)) << what;
+    EXPECT_EQ(full.vertex_color, reduced.vertex_color) << what;
     EXPECT_EQ(full.materials, reduced.materials) << what;
     EXPECT_EQ(full.material_weights, reduced.material_weights) << what;
     EXPECT_EQ(full.blends_materials, reduced.blends_materials) << what;
@@ -92,8 +85,9 @@ TEST(InteractionDetail, WithoutTextureCoordinatesEveryOtherFieldIsTheFullOnesOnE
         for (int i = 0; i < 2000; ++i) {
             // Half from outside toward the middle, half from inside outward (back faces).
             const Vec3 inside(near_centre(rng), near_centre(rng), near_centre(rng));
-            const Vec3 outside = random_unit(rng) * 4.0f;
-            const Ray ray = i % 2 == 0 ? Ray(outside, inside - outside) : Ray(inside, random_unit(rng));
+            const Vec3 outside = glint_test::random_unit_vector(rng) * 4.0f;
+            const Ray ray =
+                i % 2 == 0 ? Ray(outside, inside - outside) : Ray(inside, glint_test::random_unit_vector(rng));
             Ray r = ray;
             Hit hit;
             if (!s.shape->intersect(r, hit)) continue;
@@ -139,7 +133,7 @@ TEST(InteractionDetail, AnUntexturedSceneGivesEveryHitTheGeometryATexturedOneGiv
     int hits = 0, textured_uvs = 0;
     for (int i = 0; i < 4000; ++i) {
         const Vec3 target(along(rng), 0.0f, 0.0f);
-        const Vec3 origin = target + random_unit(rng) * 5.0f;
+        const Vec3 origin = target + glint_test::random_unit_vector(rng) * 5.0f;
         const Ray ray(origin, target - origin);
         Ray a = ray, b = ray;
         Hit hit_plain, hit_textured;

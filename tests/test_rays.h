@@ -10,6 +10,13 @@
 
 namespace glint_test {
 
+/// A direction uniform on the unit sphere: a normalized vector of three Gaussians, which is
+/// isotropic (Muller 1959).
+inline glint::Vec3 random_unit_vector(std::mt19937& rng) {
+    std::normal_distribution<float> normal(0.0f, 1.0f);
+    return normalize(glint::Vec3(normal(rng), normal(rng), normal(rng)));
+}
+
 /// Rays from a sphere around `box` towards random points in it, a third of them with a
 /// finite tmax.
 inline std::vector<glint::Ray> random_rays(const glint::Bounds3& box, int count, uint32_t seed) {

@@ -41,7 +41,9 @@ RenderScene::RenderScene(Scene description) : scene_(std::move(description)) {
         }
     }
     has_motion_ = scene_.has_motion();
-    reads_texture_coordinates_ = std::ranges::any_of(scene_.materials(), &Material::has_textures);
+    detail_ = std::ranges::any_of(scene_.materials(), &Material::has_textures)
+                  ? InteractionDetail::Full
+                  : InteractionDetail::WithoutTextureCoordinates;
     packets_pay_ = std::any_of(objects_.begin(), objects_.end(),
                                [](const HotObject& o) { return o.shape && o.shape->traces_packets(); });
     build_area_lights();
@@ -176,20 +178,18 @@ SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) cons
     const HotObject& hot = objects_[hit.object];
     const SceneObject& o = scene_.objects()[hit.object];
     SurfaceInteraction si;
-    const InteractionDetail detail =
-        reads_texture_coordinates_ ? InteractionDetail::Full : InteractionDetail::WithoutTextureCoordinates;
     if (!hot.transformed) {
-        o.shape->interaction(ray, hit, si, detail);
+        o.shape->interaction(ray, hit, si, detail_);
     } else {
         Transform moved;
         if (hot.motion) moved = hot.motion->at(ray.time);
         const Transform& world_from_object = hot.motion ? moved : o.world_from_object;
-        o.shape->interaction(world_from_object.inverse().ray(ray), hit, si, detail);
+        o.shape->interaction(world_from_object.inverse().ray(ray), hit, si, detail_);
         si.p = world_from_object.point(si.p);
         si.geometric_normal = normalize(world_from_object.normal(si.geometric_normal));
         si.shading_normal = normalize(world_from_object.normal(si.shading_normal));
         si.front_face = dot(ray.direction, si.geometric_normal) < 0.0f;
-        if (detail == InteractionDetail::Full) {
+        if (detail_ == InteractionDetail::Full) {
             // The derivatives are tangent vectors; the curvature scales as 1/length, here by
             // the square root of the area scale of the tangent plane (exact for a uniform scale).
             const float object_area = length(cross(si.dpdu, si.dpdv));

@@ -105,7 +105,7 @@ public:
     /// Whether a hit's texture coordinates are ever read: some material has a texture
     /// (Material::has_textures). Without, interaction() leaves them out (InteractionDetail)
     /// and the integrators follow no ray cones for texture footprints.
-    [[nodiscard]] bool reads_texture_coordinates() const { return reads_texture_coordinates_; }
+    [[nodiscard]] bool reads_texture_coordinates() const { return detail_ == InteractionDetail::Full; }
 
 private:
     /// What a ray query needs of an object, packed for the top-level traversal; the rest
@@ -165,7 +165,8 @@ private:
     };
     std::vector<FewObject> few_objects_;
     bool has_motion_ = false;
-    bool reads_texture_coordinates_ = true;
+    /// What interaction() asks of a shape: all of it, or without texture coordinates.
+    InteractionDetail detail_ = InteractionDetail::Full;
     bool packets_pay_ = false;
 };
 
