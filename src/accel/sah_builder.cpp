@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cstring>
 #include <stdexcept>
 
@@ -43,6 +44,18 @@ struct alignas(16) Box4 {
     /// Extend by the point in the first three lanes of `p`.
     void extend_point(const float* p) { extend_lanes(p, p); }
     [[nodiscard]] Bounds3 bounds() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+    /// Bounds3::half_area of a box that is not empty, by the same sum of products (so bit
+    /// for bit the same), without the conversion to Bounds3 and the emptiness test the
+    /// split search paid for each bin.
+    [[nodiscard]] float half_area() const {
+        alignas(16) float d[4];
+#if defined(__SSE2__)
+        _mm_store_ps(d, _mm_sub_ps(_mm_load_ps(hi), _mm_load_ps(lo)));
+#else
+        for (int i = 0; i < 4; ++i) d[i] = hi[i] - lo[i];
+#endif
+        return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+    }
 
 private:
     void extend_lanes(const float* l, const float* h) {
@@ -109,22 +122,25 @@ struct RangeBounds {
 };
 
 /// The bins of the three axes. Only the first `used` of each are set: most ranges are
-/// small, and clearing all 64 bins of every axis for each was a tenth of the build.
+/// small, and clearing all 64 bins of every axis for each was a tenth of the build. Counts
+/// are set up to the next multiple of four, so that nonempty() reads them four at a time.
 class Bins {
 public:
     explicit Bins(uint32_t used) : used_(used) {
-        for (int a = 0; a < 3; ++a)
+        for (int a = 0; a < 3; ++a) {
             for (uint32_t b = 0; b < used; ++b) {
                 bounds[a][b] = Box4::empty();
                 count[a][b] = 0;
             }
+            for (uint32_t b = used; b < counted(); ++b) count[a][b] = 0;
+        }
     }
     Bins(const Bins& o) : used_(o.used_) { *this = o; }
     Bins& operator=(const Bins& o) {
         used_ = o.used_;
         for (int a = 0; a < 3; ++a) {
             std::copy_n(o.bounds[a], used_, bounds[a]);
-            std::copy_n(o.count[a], used_, count[a]);
+            std::copy_n(o.count[a], counted(), count[a]);
         }
         return *this;
     }
@@ -136,11 +152,31 @@ public:
             }
     }
 
+    /// Bit b is set when bin b of `axis` holds primitives: the sweep visits only those, and
+    /// finding them four counts at a time was a sixth of the split search when it tested
+    /// every bin of every node one by one (most nodes hold a few primitives).
+    [[nodiscard]] uint64_t nonempty(int axis) const {
+        uint64_t mask = 0;
+#if defined(__SSE2__)
+        for (uint32_t b = 0; b < used_; b += 4) {
+            const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(count[axis] + b));
+            const int empty = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(c, _mm_setzero_si128())));
+            mask |= uint64_t(~empty & 0xf) << b;
+        }
+#else
+        for (uint32_t b = 0; b < used_; ++b) mask |= uint64_t(count[axis][b] != 0) << b;
+#endif
+        return mask;
+    }
+
     // Left uninitialised past `used` (copying them would read indeterminate values).
     Box4 bounds[3][kMaxBins];
-    uint32_t count[3][kMaxBins];
+    alignas(16) uint32_t count[3][kMaxBins];
 
 private:
+    /// How many counts are set: `used` rounded up to a multiple of four.
+    [[nodiscard]] uint32_t counted() const { return (used_ + 3) & ~3u; }
+
     uint32_t used_;
 };
 
@@ -271,24 +307,21 @@ private:
                 // sides of the split before it, so it costs the same and is never better.
                 uint32_t used[kMaxBins];
                 uint32_t n_used = 0;
-                for (uint32_t b = 0; b < map.bins; ++b) {
-                    used[n_used] = b;
-                    n_used += bins.count[a][b] != 0 ? 1 : 0;
-                }
+                for (uint64_t m = bins.nonempty(a); m != 0; m &= m - 1) used[n_used++] = uint32_t(std::countr_zero(m));
                 if (n_used < 2) continue;  // all centroids in one bin: no split along this axis
                 // Sweep from the right for every right side's cost, then from the left.
                 float right_cost[kMaxBins];
-                Bounds3 acc;
+                Box4 acc = Box4::empty();
                 uint32_t acc_count = 0;
                 for (uint32_t u = n_used - 1; u > 0; --u) {
-                    acc.extend(bins.bounds[a][used[u]].bounds());
+                    acc.extend(bins.bounds[a][used[u]]);
                     acc_count += bins.count[a][used[u]];
                     right_cost[u] = acc.half_area() * blocks(acc_count);
                 }
-                acc = Bounds3{};
+                acc = Box4::empty();
                 acc_count = 0;
                 for (uint32_t u = 0; u + 1 < n_used; ++u) {
-                    acc.extend(bins.bounds[a][used[u]].bounds());
+                    acc.extend(bins.bounds[a][used[u]]);
                     acc_count += bins.count[a][used[u]];
                     const float cost = acc.half_area() * blocks(acc_count) + right_cost[u + 1];
                     if (cost < best_cost) {

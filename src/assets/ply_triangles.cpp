@@ -18,36 +18,47 @@ namespace glint {
 
 namespace {
 
-/// The value of the scalar at `p`, stored big-endian when `swap` (this reader runs on
-/// little-endian machines only). Every type's values are exact in double.
-double scalar_at(const char* p, PlyScalar type, bool swap) {
-    char b[8];
-    const std::size_t n = ply_scalar_size(type);
-    for (std::size_t i = 0; i < n; ++i) b[i] = p[swap ? n - 1 - i : i];
-    auto as = [&b]<typename T>(T) {
-        T value;
-        std::memcpy(&value, b, sizeof(T));
-        return static_cast<double>(value);
-    };
+/// Reads the scalar at `p` as a double; every type's values are exact in double.
+using ScalarReader = double (*)(const char* p);
+
+/// A `T` stored big-endian when `Swap` (this reader runs on little-endian machines only).
+template <typename T, bool Swap>
+double read_scalar(const char* p) {
+    char b[sizeof(T)];
+    std::memcpy(b, p, sizeof(T));
+    if constexpr (Swap) std::reverse(b, b + sizeof(T));
+    T value;
+    std::memcpy(&value, b, sizeof(T));
+    return static_cast<double>(value);
+}
+
+template <bool Swap>
+ScalarReader reader_of(PlyScalar type) {
     switch (type) {
         case PlyScalar::Int8:
-            return as(int8_t{});
+            return read_scalar<int8_t, Swap>;
         case PlyScalar::UInt8:
-            return as(uint8_t{});
+            return read_scalar<uint8_t, Swap>;
         case PlyScalar::Int16:
-            return as(int16_t{});
+            return read_scalar<int16_t, Swap>;
         case PlyScalar::UInt16:
-            return as(uint16_t{});
+            return read_scalar<uint16_t, Swap>;
         case PlyScalar::Int32:
-            return as(int32_t{});
+            return read_scalar<int32_t, Swap>;
         case PlyScalar::UInt32:
-            return as(uint32_t{});
+            return read_scalar<uint32_t, Swap>;
         case PlyScalar::Float32:
-            return as(float{});
+            return read_scalar<float, Swap>;
         case PlyScalar::Float64:
-            return as(double{});
+            return read_scalar<double, Swap>;
     }
-    return 0.0;
+    return read_scalar<uint8_t, Swap>;
+}
+
+/// The reader of one property, chosen once per file: choosing it per value (a switch and a
+/// byte loop for each of a scan's millions of scalars) was most of the load.
+ScalarReader scalar_reader(PlyScalar type, bool big_endian) {
+    return big_endian ? reader_of<true>(type) : reader_of<false>(type);
 }
 
 struct Property {
@@ -207,7 +218,10 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
         in.peek() != std::ifstream::traits_type::eof())
         return std::nullopt;
 
-    const bool swap = header->big_endian;
+    ScalarReader read[6] = {};
+    for (int k = 0; k < (has_normals ? 6 : 3); ++k) read[k] = scalar_reader(type[k], header->big_endian);
+    const ScalarReader read_count = scalar_reader(*list.list_count, header->big_endian);
+    const ScalarReader read_index = scalar_reader(list.type, header->big_endian);
     MeshData data;
     const auto vertex_count = static_cast<uint32_t>(vertices.count);
     data.positions.resize(vertex_count);
@@ -215,7 +229,7 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     const char* p = bytes.data();
     for (uint32_t v = 0; v < vertex_count; ++v, p += record) {
         float value[6];
-        for (int k = 0; k < (has_normals ? 6 : 3); ++k) value[k] = float(scalar_at(p + offset[k], type[k], swap));
+        for (int k = 0; k < (has_normals ? 6 : 3); ++k) value[k] = float(read[k](p + offset[k]));
         data.positions[v] = Vec3(value[0], value[1], value[2]);
         if (!is_finite(data.positions[v])) return std::nullopt;
         if (has_normals) {
@@ -226,9 +240,9 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     }
     data.indices.resize(3 * faces.count);
     for (std::size_t f = 0; f < faces.count; ++f, p += face_record) {
-        if (scalar_at(p, *list.list_count, swap) != 3.0) return std::nullopt;
+        if (read_count(p) != 3.0) return std::nullopt;
         for (std::size_t k = 0; k < 3; ++k) {
-            const double index = scalar_at(p + count_size + k * index_size, list.type, swap);
+            const double index = read_index(p + count_size + k * index_size);
             if (!(index >= 0.0 && index < double(vertex_count))) return std::nullopt;
             data.indices[3 * f + k] = static_cast<uint32_t>(index);
         }
