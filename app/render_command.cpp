@@ -20,11 +20,13 @@
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
+#include <tbb/global_control.h>
 
 #include <unistd.h>
 #include <filesystem>
 #include <future>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 
 namespace glint::app {
@@ -67,6 +69,24 @@ void check_aov_output(const glint::RenderSettings& s, const std::string& output)
         output, fmt::join(names, ", "), glint::lower_case_extension(output)));
 }
 
+/// Bounds every oneTBB pool of the process (loading, the build, the render, the image's
+/// encoding) to `threads` while it lives; 0 leaves every core. A user who asks for N threads
+/// on a shared machine means the whole process, not only the render's tiles.
+class ThreadLimit {
+public:
+    explicit ThreadLimit(uint32_t threads) {
+        if (threads > 0) control_.emplace(tbb::global_control::max_allowed_parallelism, threads);
+    }
+    /// How many threads the process runs at most: the limit, or every core.
+    [[nodiscard]] static uint32_t threads() {
+        const auto limit = uint32_t(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+        return std::min(limit, glint::max_render_threads());
+    }
+
+private:
+    std::optional<tbb::global_control> control_;
+};
+
 /// Stopped while loading or building, before a pixel was rendered: an empty image would only
 /// replace what the output (or a checkpoint to resume) held before.
 int stopped_before_rendering(const InterruptGuard& interrupt) {
@@ -96,6 +116,8 @@ int render_image(const RenderOptions& opt) {
         early.crop.reset();
     }
     apply_overrides(early, checked);
+    // --threads from here to the image's write (the scene file has no thread count).
+    const ThreadLimit thread_limit(checked.threads);
     if (opt.checkpoint_every && !(*opt.checkpoint_every > 0.0))
         throw std::invalid_argument(
             fmt::format("--checkpoint-every: expected a positive number of seconds; got {}", *opt.checkpoint_every));
@@ -112,8 +134,10 @@ int render_image(const RenderOptions& opt) {
 
     // The scene file's hash while the scene loads, on a thread of its own: for a large mesh
     // given as the scene, reading and hashing it again took 40-55 ms before the first ray.
+    // The load runs on one thread, so this makes two; with --threads 1, it waits its turn.
     std::future<glint::RenderFingerprint> scene_fingerprint =
-        std::async(std::launch::async, glint::scene_file_fingerprint, std::filesystem::path(opt.scene_path));
+        std::async(checked.threads == 1 ? std::launch::deferred : std::launch::async, glint::scene_file_fingerprint,
+                   std::filesystem::path(opt.scene_path));
     const auto load_start = Clock::now();
     SceneSource source = load_scene(opt.scene_path, opt.scene);
     glint::LoadedScene& loaded = source.loaded;
@@ -236,9 +260,13 @@ int render_image(const RenderOptions& opt) {
                                    display_transform.exposure.automatic ? "auto " : "", write_options.exposure);
     const std::string crop =
         s.crop ? fmt::format(" (crop [{}, {}) × [{}, {}))", s.crop->x0, s.crop->x1, s.crop->y0, s.crop->y1) : "";
-    fmt::print("{}x{}{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s, {:.2f} M rays ({:.2f} M rays/s) -> {}{}\n",
-               s.width, s.height, crop, spp, load_seconds, build_seconds, stats.seconds, double(stats.rays) * 1e-6,
-               mrays_per_second, output, display_note);
+    const uint32_t threads = ThreadLimit::threads();
+    fmt::print(
+        "{}x{}{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s on {} thread{}, {:.2f} M rays ({:.2f} M rays/s) "
+        "-> "
+        "{}{}\n",
+        s.width, s.height, crop, spp, load_seconds, build_seconds, stats.seconds, threads, threads == 1 ? "" : "s",
+        double(stats.rays) * 1e-6, mrays_per_second, output, display_note);
     return 0;
 }
 

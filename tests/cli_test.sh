@@ -13,8 +13,15 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 # 1. The built-in scene renders, and the last line reports times and rays per second.
 out=$("$glint" render -o default.png --width 40 --height 30) || fail "default render exited non-zero"
 [ -s default.png ] || fail "default render wrote no image"
-echo "$out" | grep -Eq 'load [0-9.]+ s, build [0-9.]+ s, render [0-9.]+ s, [0-9.]+ M rays \([0-9.]+ M rays/s\)' ||
-  fail "final line lacks times and rays per second: $out"
+echo "$out" | grep -Eq 'load [0-9.]+ s, build [0-9.]+ s, render [0-9.]+ s on [0-9]+ threads?, [0-9.]+ M rays \([0-9.]+ M rays/s\)' ||
+  fail "final line lacks times, threads and rays per second: $out"
+# It says how many threads the process ran on: every core, or what --threads bounds it to
+# (the build and the image's encoding included, not only the render).
+cores=$(nproc)
+[ "$cores" = 1 ] && all="on 1 thread," || all="on $cores threads,"
+echo "$out" | grep -q "$all" || fail "final line should say '$all' on this machine: $out"
+out=$("$glint" render -o one_thread.png --width 40 --height 30 --threads 1) || fail "--threads 1 exited non-zero"
+echo "$out" | grep -q "on 1 thread," || fail "--threads 1: final line should say 'on 1 thread,': $out"
 
 # 2. The same image for any thread count (byte-identical float output).
 "$glint" render -o one.pfm --width 40 --height 30 --spp 4 --threads 1 -q >/dev/null || fail "1-thread render failed"
