@@ -3,8 +3,11 @@
 that load from other processes falls on every build alike (docs/performance.md uses it).
 
     bench/alternate.py process RUNS 'COMMAND with {bin}' BIN [BIN ...]
-        Whole-process wall time of COMMAND, {bin} replaced by each binary in turn; prints
-        min and median per binary. Example:
+        Whole-process wall and CPU time (user + system, of the command and its children) of
+        COMMAND, {bin} replaced by each binary in turn; prints min and median wall time and
+        median CPU time per binary, and in how many runs each binary used less CPU time than
+        the first one (CPU time moves less than wall time when other work shares the
+        machine). Example:
         bench/alternate.py process 9 '{bin} render mesh.ply -o /tmp/x.png -q --width 1 --height 1' \\
             /tmp/glint-before build/glint
 
@@ -20,21 +23,40 @@ that load from other processes falls on every build alike (docs/performance.md u
         glint-bench's default ones.
 """
 import json
+import resource
 import statistics
 import subprocess
 import sys
 import time
 
 
+def children_cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def process_times(runs, command, binaries):
+    """Per binary, (wall ms, CPU ms) of each run."""
     times = {b: [] for b in binaries}
     for _ in range(runs):
         for b in binaries:
-            start = time.perf_counter()
+            cpu_start, start = children_cpu_seconds(), time.perf_counter()
             subprocess.run(command.format(bin=b), shell=True, check=True, stdout=subprocess.DEVNULL,
                            stderr=subprocess.DEVNULL)
-            times[b].append(1000.0 * (time.perf_counter() - start))
+            times[b].append((1000.0 * (time.perf_counter() - start), 1000.0 * (children_cpu_seconds() - cpu_start)))
     return times
+
+
+def print_process_times(times):
+    first = next(iter(times.values()))
+    for binary, t in times.items():
+        wall, cpu = [w for w, _ in t], [c for _, c in t]
+        line = (f"{binary}: wall min {min(wall):.1f} ms, median {statistics.median(wall):.1f} ms; "
+                f"CPU median {statistics.median(cpu):.1f} ms ({len(t)} runs)")
+        if t is not first:
+            less = sum(c < c0 for (_, c), (_, c0) in zip(t, first))
+            line += f"; less CPU than the first in {less} of {len(t)}"
+        print(line)
 
 
 def build_times(runs, mesh, threads, binaries):
@@ -73,8 +95,9 @@ def print_rates(rates):
 def main():
     args = sys.argv[1:]
     if len(args) >= 4 and args[0] == "process":
-        times = process_times(int(args[1]), args[2], args[3:])
-    elif len(args) >= 5 and args[0] == "build":
+        print_process_times(process_times(int(args[1]), args[2], args[3:]))
+        return
+    if len(args) >= 5 and args[0] == "build":
         times = build_times(int(args[1]), args[2], args[3], args[4:])
     elif len(args) >= 5 and args[0] == "trace":
         binaries, meshes = (args[4:args.index("--")], args[args.index("--") + 1:]) if "--" in args else (args[4:], [])
