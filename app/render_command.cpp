@@ -261,12 +261,11 @@ int render_image(const RenderOptions& opt) {
     const std::string crop =
         s.crop ? fmt::format(" (crop [{}, {}) × [{}, {}))", s.crop->x0, s.crop->x1, s.crop->y0, s.crop->y1) : "";
     const uint32_t threads = ThreadLimit::threads();
+    const std::string on_threads = fmt::format("on {} thread{}", threads, threads == 1 ? "" : "s");
     fmt::print(
-        "{}x{}{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s on {} thread{}, {:.2f} M rays ({:.2f} M rays/s) "
-        "-> "
-        "{}{}\n",
-        s.width, s.height, crop, spp, load_seconds, build_seconds, stats.seconds, threads, threads == 1 ? "" : "s",
-        double(stats.rays) * 1e-6, mrays_per_second, output, display_note);
+        "{}x{}{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s {}, {:.2f} M rays ({:.2f} M rays/s) -> {}{}\n",
+        s.width, s.height, crop, spp, load_seconds, build_seconds, stats.seconds, on_threads, double(stats.rays) * 1e-6,
+        mrays_per_second, output, display_note);
     return 0;
 }
 

@@ -44,9 +44,9 @@ struct alignas(16) Box4 {
     /// Extend by the point in the first three lanes of `p`.
     void extend_point(const float* p) { extend_lanes(p, p); }
     [[nodiscard]] Bounds3 bounds() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
-    /// Bounds3::half_area of a box that is not empty, by the same sum of products (so bit
-    /// for bit the same), without the conversion to Bounds3 and the emptiness test the
-    /// split search paid for each bin.
+    /// Bounds3::half_area of a box that is not empty, by the same sum of products in the same
+    /// order, without the conversion to Bounds3 and the emptiness test the split search paid
+    /// for each bin (the trees it builds hash the same as before, docs/performance.md).
     [[nodiscard]] float half_area() const {
         alignas(16) float d[4];
 #if defined(__SSE2__)
@@ -169,7 +169,8 @@ public:
         return mask;
     }
 
-    // Left uninitialised past `used` (copying them would read indeterminate values).
+    // Boxes are left uninitialised past `used`, counts past counted() (copying them would
+    // read indeterminate values).
     Box4 bounds[3][kMaxBins];
     alignas(16) uint32_t count[3][kMaxBins];
 
