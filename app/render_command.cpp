@@ -6,6 +6,7 @@
 #include "mpi_session.h"
 #include "progress_bar.h"
 #include "render_overrides.h"
+#include "thread_limit.h"
 #include "timing.h"
 
 #include "glint/image/filter.h"
@@ -20,7 +21,6 @@
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
-#include <tbb/global_control.h>
 
 #include <unistd.h>
 #include <filesystem>
@@ -68,24 +68,6 @@ void check_aov_output(const glint::RenderSettings& s, const std::string& output)
         "{}: AOVs ({}) are written as extra channels of an EXR image, which {} cannot hold; expected -o NAME.exr",
         output, fmt::join(names, ", "), glint::lower_case_extension(output)));
 }
-
-/// Bounds every oneTBB pool of the process (loading, the build, the render, the image's
-/// encoding) to `threads` while it lives; 0 leaves every core. A user who asks for N threads
-/// on a shared machine means the whole process, not only the render's tiles.
-class ThreadLimit {
-public:
-    explicit ThreadLimit(uint32_t threads) {
-        if (threads > 0) control_.emplace(tbb::global_control::max_allowed_parallelism, threads);
-    }
-    /// How many threads the process runs at most: the limit, or every core.
-    [[nodiscard]] static uint32_t threads() {
-        const auto limit = uint32_t(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-        return std::min(limit, glint::max_render_threads());
-    }
-
-private:
-    std::optional<tbb::global_control> control_;
-};
 
 /// Stopped while loading or building, before a pixel was rendered: an empty image would only
 /// replace what the output (or a checkpoint to resume) held before.
@@ -260,7 +242,7 @@ int render_image(const RenderOptions& opt) {
                                    display_transform.exposure.automatic ? "auto " : "", write_options.exposure);
     const std::string crop =
         s.crop ? fmt::format(" (crop [{}, {}) × [{}, {}))", s.crop->x0, s.crop->x1, s.crop->y0, s.crop->y1) : "";
-    const uint32_t threads = ThreadLimit::threads();
+    const uint32_t threads = glint::max_render_threads();
     const std::string on_threads = fmt::format("on {} thread{}", threads, threads == 1 ? "" : "s");
     fmt::print(
         "{}x{}{}, {}: load {:.2f} s, build {:.2f} s, render {:.2f} s {}, {:.2f} M rays ({:.2f} M rays/s) -> {}{}\n",

@@ -2,6 +2,7 @@
 
 #include "display_options.h"
 #include "program_beside.h"
+#include "thread_limit.h"
 
 #include "glint/image/image_io.h"
 #include "glint/integrators/integrator_registry.h"
@@ -55,6 +56,7 @@ int run_view(const ViewOptions& opt, int argc, char** argv) {
     (void)argv;
     RenderSettings checked;
     apply_overrides(opt.overrides, checked);
+    const ThreadLimit thread_limit(checked.threads);
     std::string output = opt.output;
     if (output.empty())
         output =

@@ -68,6 +68,10 @@ timeout 120 xvfb-run -a -s "-screen 0 1280x1024x24" "$glint" view "$scene" "${se
   || fail "--benchmark: $(cat err.txt)"
 grep -q '^orbiting: 5 frames in .* frames/s' out.txt && grep -q '^at rest: converged 96x72 at 4 spp in ' out.txt \
   || fail "--benchmark printed: $(cat out.txt)"
+# --threads bounds the whole viewer, and the benchmark says on how many threads it ran.
+timeout 120 xvfb-run -a -s "-screen 0 1280x1024x24" "$glint" view "$scene" "${settings[@]}" --benchmark 2 --threads 1 \
+  > out.txt 2> err.txt || fail "--benchmark --threads 1: $(cat err.txt)"
+grep -q '^at rest: converged .* on 1 thread$' out.txt || fail "--benchmark --threads 1 printed: $(cat out.txt)"
 
 DISPLAY= WAYLAND_DISPLAY= SDL_VIDEODRIVER= timeout 60 "$glint" view "$scene" > out.txt 2> err.txt
 [ $? -eq 1 ] || fail "without a display glint view should exit 1"

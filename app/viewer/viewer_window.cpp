@@ -5,6 +5,7 @@
 #include "screenshot.h"
 
 #include "glint/image/image_io.h"
+#include "glint/integrators/integrator.h"
 #include "glint/math/constants.h"
 #include "glint/scene/render_scene.h"
 
@@ -302,8 +303,10 @@ void ViewerWindow::run_benchmark() {
     }
     const ViewStatus status = render_->status();
     if (status.preview || status.passes < status.total_passes) return;
-    fmt::print("at rest: converged {}x{} at {} spp in {:.2f} s\n", settings_.width, settings_.height,
-               status.total_passes, double(now - benchmark_.converge_start) / frequency);
+    const uint32_t threads = max_render_threads();
+    fmt::print("at rest: converged {}x{} at {} spp in {:.2f} s on {} thread{}\n", settings_.width, settings_.height,
+               status.total_passes, double(now - benchmark_.converge_start) / frequency, threads,
+               threads == 1 ? "" : "s");
     std::fflush(stdout);
     quit_ = true;
 }

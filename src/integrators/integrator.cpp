@@ -5,6 +5,7 @@
 #include "glint/scene/render_scene.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -20,7 +21,12 @@
 
 namespace glint {
 
-uint32_t max_render_threads() { return static_cast<uint32_t>(tbb::info::default_concurrency()); }
+uint32_t max_render_threads() {
+    const auto machine = static_cast<uint32_t>(tbb::info::default_concurrency());
+    const auto allowed =
+        static_cast<std::size_t>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    return uint32_t(std::min<std::size_t>(machine, allowed));
+}
 
 namespace {
 

@@ -95,7 +95,9 @@ struct PixelSample {
     uint32_t x = 0, y = 0, index = 0;
 };
 
-/// The threads this machine runs at once; more would not render faster.
+/// The threads this process may run at once: the machine's, or fewer while a
+/// tbb::global_control bounds the process (`glint render --threads`); more would not render
+/// faster.
 [[nodiscard]] uint32_t max_render_threads();
 
 class Integrator {
@@ -108,7 +110,7 @@ public:
     /// Add settings.samples_per_axis² samples per pixel of the prepared scene to `film`, in
     /// parallel 16×16 tiles, each weighted by settings.filter. The result does not depend on
     /// the thread count: every sample is a function of (seed, pixel, sample index). A
-    /// thread count above max_render_threads() runs that many threads. Once `stop` is
+    /// thread count above max_render_threads() runs max_render_threads(). Once `stop` is
     /// set (from a signal handler, say), tiles not yet begun are skipped and the tiles in
     /// flight finish: every pixel of the film then has all its samples or none. With
     /// `tiles`, tiles it marks done are skipped (a resumed render) and each finished tile is
