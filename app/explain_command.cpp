@@ -1,5 +1,6 @@
 #include "explain_command.h"
 #include "glint/integrators/explanation_format.h"
+#include "thread_limit.h"
 
 #include "glint/integrators/integrator.h"
 #include "glint/integrators/integrator_registry.h"
@@ -51,6 +52,7 @@ void add_explain_options(CLI::App* cmd, ExplainOptions& opt) {
 int run_explain(const ExplainOptions& opt) {
     RenderSettings checked;
     apply_overrides(opt.overrides, checked);
+    const ThreadLimit thread_limit(checked.threads);
     const PixelCoordinates pixel = parse_pixel(opt.pixel);
     SceneSource source = load_scene(opt.scene_path, opt.scene);
     for (const std::string& w : source.loaded.warnings) fmt::print(stderr, "warning: {}\n", w);

@@ -155,9 +155,9 @@ int render_image(const RenderOptions& opt) {
     if (distributed) opt.mpi->check_same_render(fingerprint);
     const std::unique_ptr<glint::Integrator> integrator = glint::make_integrator(s);
     for (const std::string& w : integrator->warnings(scene)) warn(w);
-    if (s.threads > glint::max_render_threads())
-        warn(fmt::format("--threads {}: this machine runs {} threads at once; rendering with {}", s.threads,
-                         glint::max_render_threads(), glint::max_render_threads()));
+    if (const uint32_t most = glint::max_render_threads(); s.threads > most)
+        warn(fmt::format("--threads {}: this machine runs {} threads at once; rendering with {}", s.threads, most,
+                         most));
 
     // A periodic checkpoint is written by whichever worker finishes a tile once the period
     // is over; the others carry on.

@@ -11,8 +11,8 @@ bool EmbreeScene::monitor(void* self, ssize_t bytes, bool /*post*/) {
     return true;
 }
 
-EmbreeScene::EmbreeScene(const MeshData& mesh, int threads) {
-    const std::string config = "threads=" + std::to_string(threads);
+EmbreeScene::EmbreeScene(const MeshData& mesh, int threads, const std::string& extra_config) {
+    const std::string config = "threads=" + std::to_string(threads) + (extra_config.empty() ? "" : "," + extra_config);
     device_ = rtcNewDevice(config.c_str());
     if (!device_) throw std::runtime_error("rtcNewDevice failed");
     rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeScene::monitor, this);

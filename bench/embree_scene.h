@@ -7,15 +7,18 @@
 
 #include <atomic>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace glint::bench {
 
 /// An Embree device limited to `threads` build threads, with one triangle geometry built
 /// with RTC_BUILD_QUALITY_HIGH over the caller's arrays (shared, so not counted as memory).
+/// `extra_config` is appended to the device's configuration string (rtcNewDevice's syntax,
+/// e.g. "isa=avx2" to pin Embree's kernels to an instruction set).
 class EmbreeScene {
 public:
-    EmbreeScene(const MeshData& mesh, int threads);
+    EmbreeScene(const MeshData& mesh, int threads, const std::string& extra_config = {});
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;

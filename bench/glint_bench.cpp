@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -127,7 +128,8 @@ struct Record {
 
 class MeshBench {
 public:
-    MeshBench(const std::filesystem::path& path, int reps) : name_(path.stem().string()), reps_(reps) {
+    MeshBench(const std::filesystem::path& path, int reps, std::string embree_config)
+        : name_(path.stem().string()), reps_(reps), embree_config_(std::move(embree_config)) {
         data_ = load_mesh_data(path);
     }
 
@@ -141,7 +143,7 @@ public:
             arena.execute([&] { mesh->prepare(); });
             glint_ms.push_back(ms_since(start));
             glint_ = mesh;
-            embree_ = std::make_unique<EmbreeScene>(data_, threads);
+            embree_ = std::make_unique<EmbreeScene>(data_, threads, embree_config_);
             embree_ms.push_back(embree_->build());
         }
         const double tris = double(glint_->triangle_count());
@@ -248,6 +250,7 @@ public:
 private:
     std::string name_;
     int reps_;
+    std::string embree_config_;
     MeshData data_;
     std::shared_ptr<TriangleMesh> glint_;
     std::unique_ptr<EmbreeScene> embree_;
@@ -283,6 +286,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> sets;
     int reps = 5;
     bool json = false;
+    std::string embree_config;
     app.add_option("--mesh", meshes, "Mesh file (repeatable); default: the shared bunny, dragon and Lucy");
     std::vector<std::string> set_names;
     for (const RaySet& s : kRaySets) set_names.emplace_back(s.name);
@@ -290,6 +294,8 @@ int main(int argc, char** argv) {
     app.add_option("--threads", threads, "Thread count (repeatable); default: 1 and 2")->check(CLI::PositiveNumber);
     app.add_option("--reps", reps, "Repetitions per measurement (the median is reported)")->check(CLI::PositiveNumber);
     app.add_flag("--json", json, "Print one JSON array of records instead of the table");
+    app.add_option("--embree-config", embree_config,
+                   "Added to Embree's device configuration, e.g. isa=avx2 (default: Embree picks the best kernels)");
     CLI11_PARSE(app, argc, argv);
     if (meshes.empty()) {
         const std::filesystem::path dir = std::filesystem::path(GLINT_SHARED_DATA_DIR) / "meshes";
@@ -302,7 +308,7 @@ int main(int argc, char** argv) {
     std::vector<Record> records;
     try {
         for (const std::string& path : meshes) {
-            MeshBench bench(path, reps);
+            MeshBench bench(path, reps, embree_config);
             if (!json) fmt::print("{}: {} triangles\n", std::filesystem::path(path).stem().string(), bench.triangles());
             std::vector<Record> builds;
             for (int t : threads) builds.push_back(bench.build(t));

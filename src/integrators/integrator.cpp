@@ -22,10 +22,9 @@
 namespace glint {
 
 uint32_t max_render_threads() {
-    const auto machine = static_cast<uint32_t>(tbb::info::default_concurrency());
-    const auto allowed =
-        static_cast<std::size_t>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-    return uint32_t(std::min<std::size_t>(machine, allowed));
+    return uint32_t(
+        std::min<std::size_t>(tbb::info::default_concurrency(),
+                              tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
 }
 
 namespace {
