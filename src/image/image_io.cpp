@@ -1,5 +1,6 @@
 #include "glint/image/image_io.h"
 
+#include "bmp_header.h"
 #include "image_codec.h"
 #include "png_chunks.h"
 #include "png_reader.h"
@@ -117,12 +118,12 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     std::ifstream file(path, std::ios::binary);
     std::error_code ec;
     const uint64_t size = std::filesystem::file_size(path, ec);  // 0 for a folder: not a PNG
-    check_png_chunks(
-        size,
-        [&](uint64_t offset, unsigned char* out, std::size_t n) {
-            return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
-        },
-        path.string());
+    const ByteReader read_file = [&](uint64_t offset, unsigned char* out, std::size_t n) {
+        file.clear();
+        return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
+    };
+    check_png_chunks(size, read_file, path.string());
+    check_bmp_header(size, read_file, path.string());
     // A Radiance picture or a PNG is read whole, from the stream already open, by Glint itself.
     unsigned char magic[8] = {};
     file.clear();
@@ -147,14 +148,13 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
 
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, ColorEncoding encoding) {
     if (bytes.empty()) throw ImageError(name + ": empty image data");
-    check_png_chunks(
-        bytes.size(),
-        [&](uint64_t offset, unsigned char* out, std::size_t n) {
-            if (offset > bytes.size() || n > bytes.size() - offset) return false;
-            std::memcpy(out, bytes.data() + offset, n);
-            return true;
-        },
-        name);
+    const ByteReader read_bytes = [&](uint64_t offset, unsigned char* out, std::size_t n) {
+        if (offset > bytes.size() || n > bytes.size() - offset) return false;
+        std::memcpy(out, bytes.data() + offset, n);
+        return true;
+    };
+    check_png_chunks(bytes.size(), read_bytes, name);
+    check_bmp_header(bytes.size(), read_bytes, name);
     if (std::optional<Image> image = native_radiance_picture(bytes.data(), bytes.size(), name))
         return std::move(*image);
     if (std::optional<Image> image = native_png(bytes.data(), bytes.size(), name, encoding)) return std::move(*image);
