@@ -1,6 +1,7 @@
 #include "gltf_document.h"
 
 #include "glint/diagnostics.h"
+#include "glint/util/byte_order.h"
 
 #include <cctype>
 #include <cmath>
@@ -23,9 +24,7 @@ std::vector<unsigned char> read_bytes(const std::filesystem::path& path) {
 }
 
 uint32_t read_u32(const std::vector<unsigned char>& bytes, std::size_t offset) {
-    uint32_t v;
-    std::memcpy(&v, bytes.data() + offset, 4);
-    return v;  // GLB is little-endian, as every machine Glint targets
+    return little_endian_u32(bytes.data() + offset);
 }
 
 std::vector<unsigned char> decode_base64(std::string_view text) {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file A BMP's header, checked before OpenImageIO sees it. Internal to src/image.
 
-#include "png_chunks.h"
+#include "byte_range_reader.h"
 
 #include <cstdint>
 #include <string>
@@ -15,6 +15,6 @@ namespace glint {
 /// data that starts inside the file, and one of the pairings the format defines (none: 1, 4,
 /// 8, 16, 24 or 32 bits; RLE8: 8; RLE4: 4; bit fields: 16 or 32). Throws ImageError naming
 /// `name`; returns at once for data that does not start as a BMP ("BM").
-void check_bmp_header(uint64_t total_size, const ByteReader& read, const std::string& name);
+void check_bmp_header(uint64_t total_size, const ByteRangeReader& read, const std::string& name);
 
 }  // namespace glint

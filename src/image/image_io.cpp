@@ -118,7 +118,7 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     std::ifstream file(path, std::ios::binary);
     std::error_code ec;
     const uint64_t size = std::filesystem::file_size(path, ec);  // 0 for a folder: not a PNG
-    const ByteReader read_file = [&](uint64_t offset, unsigned char* out, std::size_t n) {
+    const ByteRangeReader read_file = [&](uint64_t offset, unsigned char* out, std::size_t n) {
         file.clear();
         return bool(file.seekg(std::streamoff(offset)).read(reinterpret_cast<char*>(out), std::streamsize(n)));
     };
@@ -148,7 +148,7 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
 
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, ColorEncoding encoding) {
     if (bytes.empty()) throw ImageError(name + ": empty image data");
-    const ByteReader read_bytes = [&](uint64_t offset, unsigned char* out, std::size_t n) {
+    const ByteRangeReader read_bytes = [&](uint64_t offset, unsigned char* out, std::size_t n) {
         if (offset > bytes.size() || n > bytes.size() - offset) return false;
         std::memcpy(out, bytes.data() + offset, n);
         return true;

@@ -1,5 +1,7 @@
 #include "png_writer.h"
 
+#include "glint/util/byte_order.h"
+
 #include <tbb/parallel_for.h>
 #include <zlib.h>
 
@@ -102,11 +104,6 @@ Stripe deflate_stripe(const uint8_t* values, std::size_t row_bytes, int bytes_pe
     return stripe;
 }
 
-std::array<unsigned char, 4> big_endian(uint32_t v) {
-    return {static_cast<unsigned char>(v >> 24), static_cast<unsigned char>(v >> 16),
-            static_cast<unsigned char>(v >> 8), static_cast<unsigned char>(v)};
-}
-
 /// Writes chunks (length, type, data, CRC-32 of type and data) to a file; remembers a failure.
 class ChunkWriter {
 public:
@@ -122,10 +119,10 @@ public:
         for (const auto& [bytes, size] : parts) length += size;
         uLong crc = crc32_z(crc32_z(0, nullptr, 0), reinterpret_cast<const unsigned char*>(type), 4);
         for (const auto& [bytes, size] : parts) crc = crc32_z(crc, bytes, size);
-        raw(big_endian(uint32_t(length)).data(), 4);
+        raw(big_endian_bytes(uint32_t(length)).data(), 4);
         raw(type, 4);
         for (const auto& [bytes, size] : parts) raw(bytes, size);
-        raw(big_endian(uint32_t(crc)).data(), 4);
+        raw(big_endian_bytes(uint32_t(crc)).data(), 4);
     }
 
     bool ok() const { return ok_; }
@@ -158,8 +155,8 @@ std::string write_png(const std::filesystem::path& file, int width, int height, 
     ChunkWriter png(out);
     png.raw("\x89PNG\r\n\x1a\n", 8);
     std::array<unsigned char, 13> header{};
-    std::copy_n(big_endian(uint32_t(width)).begin(), 4, header.begin());
-    std::copy_n(big_endian(uint32_t(height)).begin(), 4, header.begin() + 4);
+    std::copy_n(big_endian_bytes(uint32_t(width)).begin(), 4, header.begin());
+    std::copy_n(big_endian_bytes(uint32_t(height)).begin(), 4, header.begin() + 4);
     header[8] = 8;  // bits per sample; then compression, filter method and interlace: all 0
     header[9] = color_type;
     png.chunk("IHDR", {{header.data(), header.size()}});
@@ -180,7 +177,7 @@ std::string write_png(const std::filesystem::path& file, int width, int height, 
     // class, no dictionary; 0x785E is a multiple of 31), the stripes, and the Adler-32 of
     // all filtered bytes. An IDAT chunk per stripe; a reader joins their data.
     static constexpr unsigned char zlib_header[] = {0x78, 0x5e};
-    const auto checksum = big_endian(uint32_t(adler));
+    const auto checksum = big_endian_bytes(uint32_t(adler));
     for (std::size_t s = 0; s < stripes.size(); ++s) {
         const bool first = s == 0, last = s + 1 == stripes.size();
         png.chunk("IDAT", {{zlib_header, first ? sizeof zlib_header : 0},
