@@ -193,6 +193,7 @@ def image_seeds(out):
     variants = {  # name: (extension, oiiotool arguments after the pattern)
         "rgb8.png": (".png", ["-d", "uint8"]), "rgba16.png": (".png", ["-d", "uint16"]),
         "grey.png": (".png", ["--ch", "R", "-d", "uint8"]), "rgb.jpg": (".jpg", []),
+        "grey.jpg": (".jpg", ["--ch", "R"]), "progressive.jpg": (".jpg", ["--attrib:type=int", "jpeg:progressive", "1"]),
         "half.exr": (".exr", ["-d", "half"]), "float.exr": (".exr", ["-d", "float"]),
         "rgb.hdr": (".hdr", []), "rgba.tga": (".tga", []),
         "rgb.bmp": (".bmp", []), "rgb16.tif": (".tif", ["-d", "uint16"]), "rgb.ppm": (".ppm", []),

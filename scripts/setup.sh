@@ -14,7 +14,7 @@ cd "$root"
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev zlib1g-dev libpng-dev libassimp-dev libtomlplusplus-dev
+  libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev zlib1g-dev libpng-dev libjpeg-dev libassimp-dev libtomlplusplus-dev
   libcli11-dev libfmt-dev libpcg-cpp-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev
   clang libclang-rt-14-dev  # libFuzzer and sanitizers for the fuzz targets (fuzz/)

@@ -6,10 +6,14 @@
 #include "glint/materials/texture.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
+#include <string>
 
 using namespace glint;
 
@@ -53,6 +57,29 @@ TEST(MipMap, EveryLevelKeepsTheMeanForOddSizesToo) {
     const MipMap mip(image);
     for (std::size_t i = 1; i < mip.levels(); ++i)
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean_of(mip.level(i), c), mean_of(*image, c), 1e-5) << "level " << i;
+}
+
+TEST(MipMap, EveryLevelIsTheSameOnOneThreadAsOnMany) {
+    // Rows of each level are shared out among threads; each value must still sum its taps
+    // in one order. 1001×767 so that the tasks' rows end at odd places; built four times on
+    // every thread, because the first build may run before the other threads have started.
+    const std::shared_ptr<const Image> image = noise_image(1001, 767);
+    const auto one = [&] {
+        const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+        return MipMap(image);
+    }();
+    for (int build = 0; build < 4; ++build) {
+        const MipMap many(image);
+        ASSERT_EQ(one.levels(), many.levels());
+        for (std::size_t i = 1; i < one.levels(); ++i) {
+            SCOPED_TRACE("build " + std::to_string(build) + ", level " + std::to_string(i));
+            ASSERT_EQ(one.level(i).pixels.size(), many.level(i).pixels.size());
+            for (std::size_t k = 0; k < one.level(i).pixels.size(); ++k)
+                ASSERT_EQ(std::bit_cast<uint32_t>(one.level(i).pixels[k]),
+                          std::bit_cast<uint32_t>(many.level(i).pixels[k]))
+                    << "value " << k;
+        }
+    }
 }
 
 TEST(MipMap, LevelOfDetailIsLog2OfTheTexelsTheFootprintSpans) {

@@ -51,26 +51,40 @@ inline std::string zlib_stored(const std::string& raw) {
     return out + big_endian((b << 16) | a);
 }
 
+/// A PNG of `bit_depth` 8 or 16 whose rows (from the top, filter bytes not included) are `rows_bytes`.
+inline std::string write_png(const std::filesystem::path& path, int width, int height, int channels, int bit_depth,
+                             const std::string& rows_bytes) {
+    const char color_type[5] = {0, 0, 4, 2, 6};
+    std::string header = big_endian(uint32_t(width)) + big_endian(uint32_t(height));
+    header += {char(bit_depth), color_type[channels], char(0), char(0), char(0)};
+    std::string raw;
+    const std::size_t row = rows_bytes.size() / std::size_t(height);
+    for (int y = 0; y < height; ++y) {
+        raw += char(0);  // filter: none
+        raw.append(rows_bytes, std::size_t(y) * row, row);
+    }
+    const std::string bytes = std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) +
+                              chunk("IDAT", zlib_stored(raw)) + chunk("IEND", "");
+    write_file(path, bytes);
+    return bytes;
+}
+
 }  // namespace png_detail
 
 /// Write `samples` (row by row from the top, `channels` per pixel: 1 grey, 2 grey + alpha,
 /// 3 RGB, 4 RGBA with straight alpha) as an 8-bit PNG; returns the file's bytes.
 inline std::string write_png8(const std::filesystem::path& path, int width, int height, int channels,
                               const std::vector<unsigned char>& samples) {
-    using namespace png_detail;
-    const char color_type[5] = {0, 0, 4, 2, 6};
-    std::string header = big_endian(uint32_t(width)) + big_endian(uint32_t(height));
-    header += {char(8), color_type[channels], char(0), char(0), char(0)};
-    std::string raw;
-    const std::size_t row = std::size_t(width) * std::size_t(channels);
-    for (int y = 0; y < height; ++y) {
-        raw += char(0);  // filter: none
-        raw.append(reinterpret_cast<const char*>(samples.data()) + std::size_t(y) * row, row);
-    }
-    const std::string bytes = std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) +
-                              chunk("IDAT", zlib_stored(raw)) + chunk("IEND", "");
-    write_file(path, bytes);
-    return bytes;
+    return png_detail::write_png(path, width, height, channels, 8,
+                                 std::string(reinterpret_cast<const char*>(samples.data()), samples.size()));
+}
+
+/// The same at 16 bits per sample (stored big-endian, as PNG stores them).
+inline std::string write_png16(const std::filesystem::path& path, int width, int height, int channels,
+                               const std::vector<uint16_t>& samples) {
+    std::string bytes;
+    for (const uint16_t v : samples) bytes += {char(v >> 8), char(v & 0xFF)};
+    return png_detail::write_png(path, width, height, channels, 16, bytes);
 }
 
 }  // namespace glint_test

@@ -5,6 +5,7 @@
 #include "image/png_reader.h"
 #include "image/image_codec.h"
 
+#include "decoded_image_expectations.h"
 #include "source_paths.h"
 #include "test_files.h"
 
@@ -12,7 +13,6 @@
 #include <png.h>
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -25,52 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 using glint::codec::DecodedImage;
 
-std::string accept_any_size(int, int, int) { return ""; }
-
-/// What OpenImageIO makes of `bytes`.
-DecodedImage read_with_oiio(const std::string& bytes) {
-    DecodedImage decoded;
-    const std::string error = glint::codec::oiio().read_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                               bytes.size(), "made.png", accept_any_size, decoded);
-    EXPECT_EQ(error, "");
-    return decoded;
-}
-
-std::optional<DecodedImage> read_natively(const std::string& bytes) {
-    DecodedImage decoded;
-    const std::optional<std::string> result = glint::codec::read_png(
-        reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), accept_any_size, decoded);
-    if (!result) return std::nullopt;
-    EXPECT_EQ(*result, "");
-    return decoded;
-}
-
 void expect_read_as_oiio_reads(const std::string& bytes, const std::string& what) {
-    SCOPED_TRACE(what);
-    const std::optional<DecodedImage> plain = read_natively(bytes);
-    ASSERT_TRUE(plain.has_value()) << "left to OpenImageIO";
-    const DecodedImage oiio = read_with_oiio(bytes);
-    EXPECT_EQ(plain->width, oiio.width);
-    EXPECT_EQ(plain->height, oiio.height);
-    EXPECT_EQ(plain->channels, oiio.channels);
-    EXPECT_EQ(plain->channel_names, oiio.channel_names);
-    EXPECT_EQ(plain->integer_data, oiio.integer_data);
-    EXPECT_EQ(plain->linear_tagged, oiio.linear_tagged);
-    EXPECT_EQ(plain->alpha_channel, oiio.alpha_channel);
-    EXPECT_EQ(plain->x, oiio.x);
-    EXPECT_EQ(plain->y, oiio.y);
-    EXPECT_EQ(plain->frame_width, oiio.frame_width);
-    EXPECT_EQ(plain->frame_height, oiio.frame_height);
-    EXPECT_EQ(plain->attributes, oiio.attributes);
-    ASSERT_EQ(plain->pixels.size(), oiio.pixels.size());
-    std::size_t differing = 0, first = 0;
-    for (std::size_t i = plain->pixels.size(); i-- > 0;)
-        if (std::bit_cast<uint32_t>(plain->pixels[i]) != std::bit_cast<uint32_t>(oiio.pixels[i])) {
-            ++differing;
-            first = i;
-        }
-    EXPECT_EQ(differing, 0u) << "first at value " << first << ": " << plain->pixels[first] << " against "
-                             << oiio.pixels[first];
+    glint_test::expect_read_as_oiio_reads(glint::codec::read_png, bytes, "made.png", what);
 }
 
 /// A PNG made with libpng: `samples` are the rows as PNG stores them (big-endian 16-bit,
@@ -220,7 +176,7 @@ TEST(PngReader, LeavesOffsetsGlintTextAndBrokenFilesToOpenImageIO) {
     DecodedImage decoded;
     auto left = [&](const std::string& bytes) {
         return !glint::codec::read_png(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(),
-                                       accept_any_size, decoded);
+                                       glint_test::accept_any_image_size, decoded);
     };
     EXPECT_TRUE(left(make_png({.offset = std::pair{3, 4}})));
     EXPECT_TRUE(left(make_png({.texts = {{"glint:spp", "4"}}})));
@@ -233,17 +189,8 @@ TEST(PngReader, LeavesOffsetsGlintTextAndBrokenFilesToOpenImageIO) {
 }
 
 TEST(PngReader, RefusesWhatTheSizeCheckRefusesBeforeReadingPixels) {
-    DecodedImage decoded;
-    const std::string bytes = make_png({.width = 64, .height = 32, .color_type = PNG_COLOR_TYPE_RGB});
-    const std::optional<std::string> result = glint::codec::read_png(
-        reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(),
-        [](int width, int height, int channels) {
-            return "refused " + std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(channels);
-        },
-        decoded);
-    ASSERT_TRUE(result.has_value());
-    EXPECT_EQ(*result, "refused 64x32x3");
-    EXPECT_TRUE(decoded.pixels.empty());
+    glint_test::expect_refused_by_the_size_check(
+        glint::codec::read_png, make_png({.width = 64, .height = 32, .color_type = PNG_COLOR_TYPE_RGB}));
 }
 
 }  // namespace

@@ -11,7 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace {
 
@@ -40,6 +42,27 @@ TEST(Srgb, EightBitPngDecodesColourButNotAlpha) {
     EXPECT_NEAR(color.at(1, 0, 3), 128.0f / 255.0f, 1e-5f) << "alpha is coverage, never decoded";
     const glint::Image data = glint::read_image(path, glint::ColorEncoding::Data);
     EXPECT_NEAR(data.at(0, 0, 0), 128.0f / 255.0f, 1e-5f);
+}
+
+TEST(Srgb, EveryEightBitLevelDecodesExactlyAsTheFormula) {
+    const auto path = glint_test::temp_dir() / "levels.png";
+    std::vector<unsigned char> levels(256);
+    for (int level = 0; level < 256; ++level) levels[std::size_t(level)] = static_cast<unsigned char>(level);
+    glint_test::write_png8(path, 256, 1, 1, levels);
+    const glint::Image color = glint::read_image(path, glint::ColorEncoding::Color);
+    for (int level = 0; level < 256; ++level)
+        EXPECT_EQ(color.at(level, 0, 0), glint::srgb_to_linear(float(level) * (1.0f / 255.0f))) << "level " << level;
+}
+
+TEST(Srgb, SixteenBitValuesBetweenEightBitLevelsDecodeByTheFormula) {
+    // Values that are not one of the 256 values of 8-bit levels must not be rounded to one.
+    const auto path = glint_test::temp_dir() / "wide.png";
+    const std::vector<uint16_t> values = {1, 1000, 30000, 40001, 65534, 32896, 257};
+    glint_test::write_png16(path, int(values.size()), 1, 1, values);
+    const glint::Image color = glint::read_image(path, glint::ColorEncoding::Color);
+    for (std::size_t i = 0; i < values.size(); ++i)
+        EXPECT_EQ(color.at(int(i), 0, 0), glint::srgb_to_linear(float(values[i]) * (1.0f / 65535.0f)))
+            << "value " << values[i];
 }
 
 TEST(Srgb, GltfTextureIsDecodedWithStraightAlpha) {

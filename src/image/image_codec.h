@@ -10,12 +10,15 @@
 /// that reads or writes an image 350-400 ms (on a 2-core EPYC), more than a small render: so
 /// EXR, the format renders are written in, is written by OpenEXR alone, in a second module
 /// (`libglint_exr.so`, exr_codec.cpp: four libraries, 3 ms), PNG by Glint itself over
-/// zlib (png_writer.h), and Radiance pictures, most environment maps, and PNG files, most
-/// textures, read by Glint too (radiance_picture.h; png_reader.h, through libpng).
+/// zlib (png_writer.h), and Radiance pictures, most environment maps, and PNG and JPEG
+/// files, most textures, read by Glint too (radiance_picture.h; png_reader.h, through
+/// libpng; jpeg_reader.h, through libjpeg).
 ///
 /// The modules hand out plain function pointers (no exceptions and no vtables cross the
 /// boundary); each returns "" on success and otherwise what went wrong, worded to follow
 /// "NAME: ".
+
+#include "glint/util/large_array.h"
 
 #include <cstddef>
 #include <functional>
@@ -28,7 +31,9 @@ namespace glint::codec {
 /// An image as its file stores it, its values converted to floats (8-bit 255 → 1.0).
 struct DecodedImage {
     int width = 0, height = 0, channels = 0;
-    std::vector<float> pixels;
+    /// On huge pages (util/large_array.h), and handed on to the Image without a copy: a
+    /// 2048×2048 RGB texture's 50 MB in small pages cost 12,288 page faults.
+    LargeArray<float> pixels;
     std::vector<std::string> channel_names;
     /// Stored as integers (display-encoded colour unless tagged linear) rather than floats.
     bool integer_data = false;

@@ -2,6 +2,7 @@
 
 #include "bmp_header.h"
 #include "image_codec.h"
+#include "jpeg_reader.h"
 #include "png_chunks.h"
 #include "png_reader.h"
 #include "png_writer.h"
@@ -64,6 +65,24 @@ std::string check_size(int width, int height, int channels) {
            std::to_string(kMaxImageValues) + " values, a 16384×8192 RGBA image)";
 }
 
+/// srgb_to_linear(v), by table where `v` is one of the 256 values of an 8-bit level (as the
+/// readers make them: the level times the reciprocal of 255), so the result is the function's
+/// own, bit for bit. powf on every texel was a third of the CPU time of loading a glTF
+/// asset's JPEG textures (docs/performance.md, "JPEG textures without OpenImageIO").
+float srgb_to_linear_of_level(float v) {
+    static const std::array<float, 256> kLinear = [] {
+        std::array<float, 256> table{};
+        for (int level = 0; level < 256; ++level) table[level] = srgb_to_linear(float(level) * (1.0f / 255.0f));
+        return table;
+    }();
+    const float scaled = v * 255.0f;
+    if (scaled >= 0.0f && scaled <= 255.0f) {
+        const auto level = static_cast<int>(scaled + 0.5f);
+        if (float(level) * (1.0f / 255.0f) == v) return kLinear[std::size_t(level)];
+    }
+    return srgb_to_linear(v);
+}
+
 /// The decoded image as linear floats. Integer files hold display-encoded colour unless they
 /// say otherwise; float files are linear. Alpha is coverage, never sRGB-encoded.
 Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
@@ -71,7 +90,7 @@ Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
     image.width = decoded.width;
     image.height = decoded.height;
     image.channels = decoded.channels;
-    image.pixels.assign(decoded.pixels.begin(), decoded.pixels.end());
+    image.pixels = std::move(decoded.pixels);
     image.channel_names = std::move(decoded.channel_names);
     image.region = {decoded.x, decoded.y, decoded.frame_width, decoded.frame_height};
     image.attributes = std::move(decoded.attributes);
@@ -82,7 +101,7 @@ Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
         const auto stride = std::size_t(image.channels);
         for (std::size_t i = 0; i < image.pixels.size(); i += stride)
             for (int c = 0; c < std::min(image.channels, 3); ++c)
-                if (c != alpha) image.pixels[i + c] = srgb_to_linear(image.pixels[i + c]);
+                if (c != alpha) image.pixels[i + c] = srgb_to_linear_of_level(image.pixels[i + c]);
     }
     return image;
 }
@@ -99,13 +118,19 @@ std::optional<Image> native_radiance_picture(const unsigned char* bytes, std::si
     return image;
 }
 
-/// The PNG in `bytes` as Glint reads it (png_reader.h). Nothing when the bytes are another
-/// format or a PNG left to OpenImageIO; an ImageError naming `name` when it is too large.
-std::optional<Image> native_png(const unsigned char* bytes, std::size_t size, const std::string& name,
-                                ColorEncoding encoding) {
-    if (!codec::is_png(bytes, size)) return std::nullopt;
+/// The PNG or JPEG in `bytes` as Glint reads it (png_reader.h, jpeg_reader.h). Nothing when
+/// the bytes are another format or a file left to OpenImageIO; an ImageError naming `name`
+/// when it is too large.
+std::optional<Image> native_png_or_jpeg(const unsigned char* bytes, std::size_t size, const std::string& name,
+                                        ColorEncoding encoding) {
+    using Reader = std::optional<std::string> (*)(const unsigned char*, std::size_t, const codec::SizeCheck&,
+                                                  codec::DecodedImage&);
+    const Reader read = codec::is_png(bytes, size)    ? Reader(codec::read_png)
+                        : codec::is_jpeg(bytes, size) ? Reader(codec::read_jpeg)
+                                                      : nullptr;
+    if (!read) return std::nullopt;
     codec::DecodedImage decoded;
-    const std::optional<std::string> error = codec::read_png(bytes, size, check_size, decoded);
+    const std::optional<std::string> error = read(bytes, size, check_size, decoded);
     if (!error) return std::nullopt;
     if (!error->empty()) throw ImageError(name + ": " + *error);
     return linear_image(std::move(decoded), encoding);
@@ -124,20 +149,20 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     };
     check_png_chunks(size, read_file, path.string());
     check_bmp_header(size, read_file, path.string());
-    // A Radiance picture or a PNG is read whole, from the stream already open, by Glint itself.
+    // A Radiance picture, a PNG or a JPEG is read whole, from the stream already open, by Glint itself.
     unsigned char magic[8] = {};
     file.clear();
     file.seekg(0).read(reinterpret_cast<char*>(magic), sizeof magic);
     const auto magic_size = std::size_t(file.gcount());
     const bool radiance = codec::is_radiance_picture(magic, std::min<std::size_t>(magic_size, 2));
-    if (radiance || codec::is_png(magic, magic_size)) {
+    if (radiance || codec::is_png(magic, magic_size) || codec::is_jpeg(magic, magic_size)) {
         std::string bytes(size, '\0');
         file.clear();
         if (!file.seekg(0).read(bytes.data(), std::streamsize(size)))
             throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
         const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
         std::optional<Image> image = radiance ? native_radiance_picture(data, size, path.string())
-                                              : native_png(data, size, path.string(), encoding);
+                                              : native_png_or_jpeg(data, size, path.string(), encoding);
         if (image) return std::move(*image);
     }
     codec::DecodedImage decoded;
@@ -157,7 +182,8 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
     check_bmp_header(bytes.size(), read_bytes, name);
     if (std::optional<Image> image = native_radiance_picture(bytes.data(), bytes.size(), name))
         return std::move(*image);
-    if (std::optional<Image> image = native_png(bytes.data(), bytes.size(), name, encoding)) return std::move(*image);
+    if (std::optional<Image> image = native_png_or_jpeg(bytes.data(), bytes.size(), name, encoding))
+        return std::move(*image);
     codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
         !error.empty())

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace glint {
 
 namespace {
@@ -30,30 +33,39 @@ std::vector<Footprint> footprints(int n, int count) {
 }
 
 /// `source` resampled to `count` columns (`columns`) or rows, box-filtered as footprints()
-/// says. Both passes walk the pixels row by row, so neither strides through memory.
+/// says. Both passes walk the pixels row by row, so neither strides through memory, and
+/// each output row is its own task: a 2048×2048 texture's pyramid took a tenth of a glTF
+/// asset's load on one thread. Every output value sums its taps in the same order on any
+/// number of threads.
 Image shrink(const Image& source, int count, bool columns) {
     const int channels = source.channels;
     Image out(columns ? count : source.width, columns ? source.height : count, channels);
     const std::vector<Footprint> taps = footprints(columns ? source.width : source.height, count);
+    constexpr int kRowsPerTask = 16;
     if (columns) {
-        for (int y = 0; y < source.height; ++y)
-            for (int i = 0; i < count; ++i) {
-                const Footprint& f = taps[std::size_t(i)];
-                for (std::size_t k = 0; k < f.weights.size(); ++k)
-                    for (int c = 0; c < channels; ++c)
-                        out.at(i, y, c) += f.weights[k] * source.at(f.first + int(k), y, c);
-            }
+        tbb::parallel_for(tbb::blocked_range<int>(0, source.height, kRowsPerTask),
+                          [&](const tbb::blocked_range<int>& rows) {
+                              for (int y = rows.begin(); y < rows.end(); ++y)
+                                  for (int i = 0; i < count; ++i) {
+                                      const Footprint& f = taps[std::size_t(i)];
+                                      for (std::size_t k = 0; k < f.weights.size(); ++k)
+                                          for (int c = 0; c < channels; ++c)
+                                              out.at(i, y, c) += f.weights[k] * source.at(f.first + int(k), y, c);
+                                  }
+                          });
         return out;
     }
     const std::size_t row = std::size_t(source.width) * std::size_t(channels);
-    for (int j = 0; j < count; ++j) {
-        const Footprint& f = taps[std::size_t(j)];
-        float* to = &out.pixels[std::size_t(j) * row];
-        for (std::size_t k = 0; k < f.weights.size(); ++k) {
-            const float* from = &source.pixels[std::size_t(f.first + int(k)) * row];
-            for (std::size_t x = 0; x < row; ++x) to[x] += f.weights[k] * from[x];
+    tbb::parallel_for(tbb::blocked_range<int>(0, count, kRowsPerTask), [&](const tbb::blocked_range<int>& rows) {
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            const Footprint& f = taps[std::size_t(j)];
+            float* to = &out.pixels[std::size_t(j) * row];
+            for (std::size_t k = 0; k < f.weights.size(); ++k) {
+                const float* from = &source.pixels[std::size_t(f.first + int(k)) * row];
+                for (std::size_t x = 0; x < row; ++x) to[x] += f.weights[k] * from[x];
+            }
         }
-    }
+    });
     return out;
 }
 
