@@ -1,6 +1,6 @@
 #pragma once
-// 8-bit PNG files written byte for byte by tests, with no library's colour or alpha handling
-// on the way: the samples a test gives are the samples the file holds (zlib "stored" blocks,
+// 8- and 16-bit PNG files written byte for byte by tests, with no library's colour or alpha
+// handling on the way: the samples a test gives are the samples the file holds (zlib "stored" blocks,
 // RFC 1950/1951; chunks and CRC-32 as the PNG specification, ISO/IEC 15948, defines them).
 
 #include "test_files.h"

@@ -34,9 +34,9 @@ std::vector<Footprint> footprints(int n, int count) {
 
 /// `source` resampled to `count` columns (`columns`) or rows, box-filtered as footprints()
 /// says. Both passes walk the pixels row by row, so neither strides through memory, and
-/// each output row is its own task: a 2048×2048 texture's pyramid took a tenth of a glTF
-/// asset's load on one thread. Every output value sums its taps in the same order on any
-/// number of threads.
+/// rows are shared out among threads: a 2048×2048 texture's pyramid was 13 % of the CPU
+/// time of loading the Khronos TransmissionTest sample. Every output value sums its taps in
+/// the same order on any number of threads.
 Image shrink(const Image& source, int count, bool columns) {
     const int channels = source.channels;
     Image out(columns ? count : source.width, columns ? source.height : count, channels);
