@@ -99,9 +99,17 @@ Image linear_image(codec::DecodedImage decoded, ColorEncoding encoding) {
         int alpha = decoded.alpha_channel;
         if (alpha < 0 && (image.channels == 2 || image.channels == 4)) alpha = image.channels - 1;
         const auto stride = std::size_t(image.channels);
-        for (std::size_t i = 0; i < image.pixels.size(); i += stride)
-            for (int c = 0; c < std::min(image.channels, 3); ++c)
-                if (c != alpha) image.pixels[i + c] = srgb_to_linear_of_level(image.pixels[i + c]);
+        const int colours = std::min(image.channels, 3);
+        // Each value on its own, so the pixels are shared out among threads.
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, image.pixels.size() / stride, 1 << 14),
+                          [&](const tbb::blocked_range<std::size_t>& pixels) {
+                              for (std::size_t p = pixels.begin(); p < pixels.end(); ++p)
+                                  for (int c = 0; c < colours; ++c)
+                                      if (c != alpha) {
+                                          float& v = image.pixels[p * stride + std::size_t(c)];
+                                          v = srgb_to_linear_of_level(v);
+                                      }
+                          });
     }
     return image;
 }
