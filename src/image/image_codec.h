@@ -28,6 +28,11 @@
 
 namespace glint::codec {
 
+/// An 8-bit sample as OpenImageIO converts it to float: the value times the reciprocal of
+/// 255, in float. Dividing by 255 differs in the last bit for some values, so Glint's readers
+/// (png_reader.h, jpeg_reader.h) and the sRGB table of image_io.cpp all convert through this.
+[[nodiscard]] inline float float_of_byte(unsigned level) { return float(level) * (1.0f / 255.0f); }
+
 /// An image as its file stores it, its values converted to floats (8-bit 255 → 1.0).
 struct DecodedImage {
     int width = 0, height = 0, channels = 0;

@@ -66,19 +66,19 @@ std::string check_size(int width, int height, int channels) {
 }
 
 /// srgb_to_linear(v), by table where `v` is one of the 256 values of an 8-bit level (as the
-/// readers make them: the level times the reciprocal of 255), so the result is the function's
-/// own, bit for bit. powf on every texel was a third of the CPU time of loading a glTF
-/// asset's JPEG textures (docs/performance.md, "JPEG textures without OpenImageIO").
+/// readers make them: codec::float_of_byte), so the result is the function's own, bit for
+/// bit. powf on every texel was a third of the CPU time of loading a glTF asset's JPEG
+/// textures (docs/performance.md, "JPEG textures without OpenImageIO").
 float srgb_to_linear_of_level(float v) {
     static const std::array<float, 256> kLinear = [] {
         std::array<float, 256> table{};
-        for (int level = 0; level < 256; ++level) table[level] = srgb_to_linear(float(level) * (1.0f / 255.0f));
+        for (int level = 0; level < 256; ++level) table[level] = srgb_to_linear(codec::float_of_byte(unsigned(level)));
         return table;
     }();
     const float scaled = v * 255.0f;
     if (scaled >= 0.0f && scaled <= 255.0f) {
         const auto level = static_cast<int>(scaled + 0.5f);
-        if (float(level) * (1.0f / 255.0f) == v) return kLinear[std::size_t(level)];
+        if (codec::float_of_byte(unsigned(level)) == v) return kLinear[std::size_t(level)];
     }
     return srgb_to_linear(v);
 }

@@ -99,8 +99,7 @@ std::optional<std::string> read_jpeg(const unsigned char* bytes, std::size_t siz
     out.height = height;
     out.channels = channels;
     out.pixels.resize(samples.size());
-    // OpenImageIO's integer-to-float conversion: the value times the reciprocal of 255, in float.
-    for (std::size_t i = 0; i < samples.size(); ++i) out.pixels[i] = float(samples[i]) * (1.0f / 255.0f);
+    for (std::size_t i = 0; i < samples.size(); ++i) out.pixels[i] = float_of_byte(samples[i]);
     out.channel_names = channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
     out.alpha_channel = -1;
     out.integer_data = true;

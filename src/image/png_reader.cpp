@@ -128,7 +128,7 @@ std::optional<std::string> read_png(const unsigned char* bytes, std::size_t size
             out.pixels[i] = float(v) * (1.0f / 65535.0f);
         }
     } else {
-        for (std::size_t i = 0; i < values; ++i) out.pixels[i] = float(samples[i]) * (1.0f / 255.0f);
+        for (std::size_t i = 0; i < values; ++i) out.pixels[i] = float_of_byte(samples[i]);
     }
     static const std::vector<std::string> kNames[4] = {{"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
     out.channel_names = kNames[channels - 1];
