@@ -312,6 +312,10 @@ loads libOpenImageIO.so render -o start.png --width 1 --height 1 -q && fail "a r
 loads libOpenImageIO.so render -o start.exr --width 1 --height 1 -q && fail "a render to EXR loaded OpenImageIO"
 loads libOpenEXR render -o start.png --width 1 --height 1 -q && fail "a render to PNG loaded OpenEXR"
 loads libOpenEXR render -o start.exr --width 1 --height 1 -q || fail "a render to EXR did not load OpenEXR (is the check blind?)"
+# EXR input too goes through OpenEXR's module alone (src/image/exr_reader.h): an EXR sky.
+"$glint" render -o sky.exr --width 8 --height 4 -q || fail "a render to EXR failed"
+loads libOpenImageIO.so render --env sky.exr -o start.png --width 1 --height 1 -q &&
+  fail "a render under an EXR environment map loaded OpenImageIO"
 loads libOpenImageIO.so render -o start.tif --width 1 --height 1 -q ||
   fail "a render to TIFF did not load OpenImageIO (is the check blind?)"
 # Open MPI is glint-mpi's alone (app/program_beside.h): no command of glint loads it.

@@ -1,11 +1,13 @@
 /// libglint_exr.so: OpenEXR output through OpenEXR itself, loaded by libglint on the first
-/// EXR written (image_codec.h says why a module). Nothing here throws across the boundary.
+/// EXR written or read (image_codec.h says why a module; input is exr_reader.cpp). Nothing
+/// here throws across the boundary.
 ///
 /// The file is what OpenImageIO's writer made of the same pixels: 32-bit float channels, ZIP
 /// compression at OpenEXR's default level, R G B (one channel: Y) unless named, the data
 /// window inside the display window, "Software" and the "glint:NAME" text attributes. It
 /// carries no "DateTime", so the same render gives the same bytes.
 
+#include "exr_reader.h"
 #include "image_codec.h"
 
 #include <ImfChannelList.h>
@@ -69,7 +71,7 @@ std::string write_file(const std::string& file, const PixelsToWrite& pixels) {
     }
 }
 
-constexpr glint::codec::ExrFunctions kFunctions{write_file};
+constexpr glint::codec::ExrFunctions kFunctions{write_file, glint::codec::read_exr};
 
 }  // namespace
 

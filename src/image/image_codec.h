@@ -8,8 +8,8 @@
 /// image is read or written: `glint --help`, `glint info`, a scene file's error and every
 /// test that touches no image never pay for it. Even loaded on demand it costs the process
 /// that reads or writes an image 350-400 ms (on a 2-core EPYC), more than a small render: so
-/// EXR, the format renders are written in, is written by OpenEXR alone, in a second module
-/// (`libglint_exr.so`, exr_codec.cpp: four libraries, 3 ms), PNG by Glint itself over
+/// EXR, the format renders are written in, is written and read by OpenEXR alone, in a second
+/// module (`libglint_exr.so`, exr_codec.cpp and exr_reader.h: four libraries, 3 ms), PNG by Glint itself over
 /// zlib (png_writer.h), and Radiance pictures, most environment maps, and PNG and JPEG
 /// files, most textures, read by Glint too (radiance_picture.h; png_reader.h, through
 /// libpng; jpeg_reader.h, through libjpeg).
@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,10 +87,14 @@ struct Functions {
     std::string (*write_file)(const std::string& format_name, const std::string& file, const PixelsToWrite& pixels);
 };
 
-/// The EXR module's one function.
+/// The EXR module's functions.
 struct ExrFunctions {
     /// Write `pixels` (floats) to `file` as OpenEXR.
     std::string (*write_file)(const std::string& file, const PixelsToWrite& pixels);
+    /// Read the EXR in `bytes` on `threads` threads (exr_reader.h): "" on success, the size
+    /// check's refusal, or nothing when the file is left to OpenImageIO.
+    std::optional<std::string> (*read_memory)(const unsigned char* bytes, std::size_t size, const SizeCheck& check,
+                                              int threads, DecodedImage& out);
 };
 
 /// The modules' entry points, looked up by these names.

@@ -1,6 +1,7 @@
 #include "glint/image/image_io.h"
 
 #include "bmp_header.h"
+#include "exr_reader.h"
 #include "image_codec.h"
 #include "jpeg_reader.h"
 #include "png_chunks.h"
@@ -144,6 +145,20 @@ std::optional<Image> native_png_or_jpeg(const unsigned char* bytes, std::size_t 
     return linear_image(std::move(decoded), encoding);
 }
 
+/// The EXR in `bytes` as OpenEXR alone reads it (exr_reader.h), decompressed on the threads
+/// the caller may use. Nothing when the bytes are another format or a file left to
+/// OpenImageIO; an ImageError naming `name` when it is too large.
+std::optional<Image> native_exr(const unsigned char* bytes, std::size_t size, const std::string& name,
+                                ColorEncoding encoding) {
+    if (!codec::is_exr(bytes, size)) return std::nullopt;
+    codec::DecodedImage decoded;
+    const std::optional<std::string> error =
+        codec::exr().read_memory(bytes, size, check_size, tbb::this_task_arena::max_concurrency(), decoded);
+    if (!error) return std::nullopt;
+    if (!error->empty()) throw ImageError(name + ": " + *error);
+    return linear_image(std::move(decoded), encoding);
+}
+
 }  // namespace
 
 Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
@@ -157,19 +172,22 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     };
     check_png_chunks(size, read_file, path.string());
     check_bmp_header(size, read_file, path.string());
-    // A Radiance picture, a PNG or a JPEG is read whole, from the stream already open, by Glint itself.
+    // A Radiance picture, a PNG, a JPEG or an EXR is read whole, from the stream already
+    // open, by Glint itself (the EXR by OpenEXR alone).
     unsigned char magic[8] = {};
     file.clear();
     file.seekg(0).read(reinterpret_cast<char*>(magic), sizeof magic);
     const auto magic_size = std::size_t(file.gcount());
     const bool radiance = codec::is_radiance_picture(magic, std::min<std::size_t>(magic_size, 2));
-    if (radiance || codec::is_png(magic, magic_size) || codec::is_jpeg(magic, magic_size)) {
+    const bool exr = codec::is_exr(magic, magic_size);
+    if (radiance || exr || codec::is_png(magic, magic_size) || codec::is_jpeg(magic, magic_size)) {
         std::string bytes(size, '\0');
         file.clear();
         if (!file.seekg(0).read(bytes.data(), std::streamsize(size)))
             throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
         const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
         std::optional<Image> image = radiance ? native_radiance_picture(data, size, path.string())
+                                     : exr    ? native_exr(data, size, path.string(), encoding)
                                               : native_png_or_jpeg(data, size, path.string(), encoding);
         if (image) return std::move(*image);
     }
@@ -192,6 +210,7 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
         return std::move(*image);
     if (std::optional<Image> image = native_png_or_jpeg(bytes.data(), bytes.size(), name, encoding))
         return std::move(*image);
+    if (std::optional<Image> image = native_exr(bytes.data(), bytes.size(), name, encoding)) return std::move(*image);
     codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
         !error.empty())
