@@ -195,6 +195,9 @@ def image_seeds(out):
         "grey.png": (".png", ["--ch", "R", "-d", "uint8"]), "rgb.jpg": (".jpg", []),
         "grey.jpg": (".jpg", ["--ch", "R"]), "progressive.jpg": (".jpg", ["--attrib:type=int", "jpeg:progressive", "1"]),
         "half.exr": (".exr", ["-d", "half"]), "float.exr": (".exr", ["-d", "float"]),
+        "tiled_piz.exr": (".exr", ["-d", "half", "--tile", "8", "8", "--compression", "piz"]),
+        "rgba_dwaa.exr": (".exr", ["-d", "half", "--compression", "dwaa"]),
+        "crop_b44.exr": (".exr", ["-d", "half", "--compression", "b44", "--crop", "12x6+2+1"]),
         "rgb.hdr": (".hdr", []), "rgba.tga": (".tga", []),
         "rgb.bmp": (".bmp", []), "rgb16.tif": (".tif", ["-d", "uint16"]), "rgb.ppm": (".ppm", []),
     }
