@@ -6,11 +6,12 @@
 /// exports from Blender), and reading one through OpenImageIO first loads its 255 libraries,
 /// 350-400 ms (docs/performance.md, "EXR input without OpenImageIO"). OpenImageIO 2.4 reads
 /// EXR through the same OpenEXR, into the same floats; this reader orders the channels as it
-/// does (R G B Y A Z first, by layer), marks alpha and the data window as it does and keeps
-/// the "glint:" attributes, so that its result is OpenImageIO's bit for bit (ExrReader.*
-/// compares them). Multi-part and deep files, integer and subsampled channels, cube and
-/// lat-long environment files, and any file OpenEXR throws on are left to OpenImageIO, which
-/// reads them, or words their error, as before.
+/// does (by layer; R G B Y A Z and their kin first, X Y Z together in a layer that holds
+/// them), marks alpha and the data window as it does and keeps the "glint:" attributes, so
+/// that its result is OpenImageIO's bit for bit (ExrReader.* compares them). Multi-part and
+/// deep files, integer and subsampled channels, cube and lat-long environment files, and any
+/// file OpenEXR throws on are left to OpenImageIO, which reads them, or words their error,
+/// as before.
 
 #include "image_codec.h"
 

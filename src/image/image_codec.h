@@ -9,10 +9,10 @@
 /// test that touches no image never pay for it. Even loaded on demand it costs the process
 /// that reads or writes an image 350-400 ms (on a 2-core EPYC), more than a small render: so
 /// EXR, the format renders are written in, is written and read by OpenEXR alone, in a second
-/// module (`libglint_exr.so`, exr_codec.cpp and exr_reader.h: four libraries, 3 ms), PNG by Glint itself over
-/// zlib (png_writer.h), and Radiance pictures, most environment maps, and PNG and JPEG
-/// files, most textures, read by Glint too (radiance_picture.h; png_reader.h, through
-/// libpng; jpeg_reader.h, through libjpeg).
+/// module (`libglint_exr.so`, exr_codec.cpp and exr_reader.h: four libraries, 3 ms), PNG is
+/// written by Glint itself over zlib (png_writer.h), and Radiance pictures, most environment
+/// maps, and PNG and JPEG files, most textures, are read by Glint too (radiance_picture.h;
+/// png_reader.h, through libpng; jpeg_reader.h, through libjpeg).
 ///
 /// The modules hand out plain function pointers (no exceptions and no vtables cross the
 /// boundary); each returns "" on success and otherwise what went wrong, worded to follow
