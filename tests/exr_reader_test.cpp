@@ -60,7 +60,7 @@ struct MadeExr {
     bool tiled = false;
     Imf::LevelMode levels = Imf::ONE_LEVEL;
     std::vector<std::pair<std::string, std::string>> attributes{};
-    bool latlong = false;
+    std::optional<Imf::Envmap> envmap{};
     int sampling = 1;  // of the last channel
 };
 
@@ -77,7 +77,7 @@ Imf::Header header_of(const MadeExr& made) {
         header.channels().insert(made.channels[c].first, Imf::Channel(made.channels[c].second, sampling, sampling));
     }
     for (const auto& [name, text] : made.attributes) header.insert(name, Imf::StringAttribute(text));
-    if (made.latlong) header.insert("envmap", Imf::EnvmapAttribute(Imf::ENVMAP_LATLONG));
+    if (made.envmap) header.insert("envmap", Imf::EnvmapAttribute(*made.envmap));
     if (made.tiled) header.setTileDescription(Imf::TileDescription(16, 8, made.levels));
     return header;
 }
@@ -182,6 +182,7 @@ TEST(ExrReader, TilesMipLevelsAndWindowsReadAsOpenImageIOReadsThem) {
     expect_read_as_oiio_reads(
         make_exr({.x = -5, .y = 7, .display = Imath::Box2i(Imath::V2i(-10, -3), Imath::V2i(50, 60))}),
         "a data window inside a display window off the origin");
+    expect_read_as_oiio_reads(make_exr({.envmap = Imf::ENVMAP_LATLONG}), "a lat-long environment");
     expect_read_as_oiio_reads(make_exr({.x = 3, .y = 4}), "a data window equal to a display window off the origin");
     expect_read_as_oiio_reads(make_exr({.display = Imath::Box2i(Imath::V2i(5, 5), Imath::V2i(20, 20))}),
                               "a data window larger than the display window");
@@ -227,7 +228,9 @@ TEST(ExrReader, LeavesOtherKindsAndBrokenFilesToOpenImageIO) {
     };
     EXPECT_TRUE(left(make_exr({.channels = {{"R", Imf::UINT}, {"G", Imf::HALF}, {"B", Imf::HALF}}})));
     EXPECT_TRUE(left(make_exr({.width = 8, .height = 8, .sampling = 2})));
-    EXPECT_TRUE(left(make_exr({.latlong = true})));
+    // OpenImageIO frames a MIP-mapped cube map as one face.
+    EXPECT_TRUE(left(
+        make_exr({.width = 8, .height = 48, .tiled = true, .levels = Imf::MIPMAP_LEVELS, .envmap = Imf::ENVMAP_CUBE})));
     {
         Imf::StdOSStream stream;
         Imf::Header first = header_of({}), second = header_of({});

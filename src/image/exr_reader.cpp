@@ -7,6 +7,7 @@
 
 #include <Iex.h>
 #include <ImfChannelList.h>
+#include <ImfEnvmapAttribute.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
@@ -138,8 +139,11 @@ std::optional<std::string> read_exr(const unsigned char* bytes, std::size_t size
         const auto fits_int = [](int64_t v) { return v >= INT_MIN && v <= INT_MAX; };
         if (width == 0 || height == 0 || side(display.min.x, display.max.x) == 0 ||
             side(display.min.y, display.max.y) == 0 || !fits_int(int64_t(data.min.x) - display.min.x) ||
-            !fits_int(int64_t(data.min.y) - display.min.y) || header.find("envmap") != header.end())
+            !fits_int(int64_t(data.min.y) - display.min.y))
             return std::nullopt;
+        // OpenImageIO frames a MIP-mapped cube map as one face; cube maps are left to it.
+        const auto* envmap = header.findTypedAttribute<Imf::EnvmapAttribute>("envmap");
+        if (envmap && envmap->value() == Imf::ENVMAP_CUBE) return std::nullopt;
         std::vector<std::unique_ptr<ChannelName>> names;
         for (auto channel = header.channels().begin(); channel != header.channels().end(); ++channel) {
             const Imf::Channel& c = channel.channel();

@@ -9,8 +9,8 @@
 /// does (by layer; R G B Y A Z and their kin first, X Y Z together in a layer that holds
 /// them), marks alpha and the data window as it does and keeps the "glint:" attributes, so
 /// that its result is OpenImageIO's bit for bit (ExrReader.* compares them). Multi-part and
-/// deep files, integer and subsampled channels, cube and lat-long environment files, and any
-/// file OpenEXR throws on are left to OpenImageIO, which reads them, or words their error,
+/// deep files, integer and subsampled channels, cube maps, and any file OpenEXR throws on
+/// are left to OpenImageIO, which reads them, or words their error,
 /// as before.
 
 #include "image_codec.h"
