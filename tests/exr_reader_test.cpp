@@ -233,7 +233,8 @@ TEST(ExrReader, LeavesOtherKindsAndBrokenFilesToOpenImageIO) {
         make_exr({.width = 8, .height = 48, .tiled = true, .levels = Imf::MIPMAP_LEVELS, .envmap = Imf::ENVMAP_CUBE})));
     {
         Imf::StdOSStream stream;
-        Imf::Header first = header_of({}), second = header_of({});
+        const MadeExr made{};
+        Imf::Header first = header_of(made), second = header_of(made);
         first.setName("first");
         second.setName("second");
         first.setType(Imf::SCANLINEIMAGE);
@@ -243,9 +244,9 @@ TEST(ExrReader, LeavesOtherKindsAndBrokenFilesToOpenImageIO) {
         for (int part = 0; part < 2; ++part) {
             Imf::OutputPart output(file, part);
             Imf::FrameBuffer frame;
-            const Planes planes({}, first.dataWindow(), 0, frame);
+            const Planes planes(made, first.dataWindow(), 0, frame);
             output.setFrameBuffer(frame);
-            output.writePixels(29);
+            output.writePixels(made.height);
         }
         EXPECT_TRUE(left(stream.str()));
     }
