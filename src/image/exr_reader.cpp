@@ -23,7 +23,6 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
-#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -63,16 +62,15 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 /// the order of a list (any case), then the rest by name.
 struct ChannelName {
     std::string full;
-    std::string_view layer, suffix;
+    std::size_t suffix_start = 0;  // past the last dot
     int rank = 0;
 
     explicit ChannelName(std::string name) : full(std::move(name)) {
-        const std::string_view view = full;
-        const std::size_t dot = view.find_last_of('.');
-        layer = dot == std::string_view::npos ? std::string_view() : view.substr(0, dot + 1);
-        suffix = dot == std::string_view::npos ? view : view.substr(dot + 1);
+        const std::size_t dot = full.find_last_of('.');
+        suffix_start = dot == std::string::npos ? 0 : dot + 1;
     }
-    ChannelName(const ChannelName&) = delete;  // the views point into `full`
+    std::string_view layer() const { return std::string_view(full).substr(0, suffix_start); }
+    std::string_view suffix() const { return std::string_view(full).substr(suffix_start); }
 
     /// The suffix's place in OpenImageIO's list of known suffixes: one list for colour, and
     /// another, with X Y Z together, for a layer that holds X and Y or Z (a position or a
@@ -86,33 +84,33 @@ struct ChannelName {
             "A", "Alpha", "AR", "RA",    "AG", "GA",   "AB", "BA", "Depth", "Zback"};
         const auto place = [&](const auto& known) {
             const auto found = std::find_if(known.begin(), known.end(),
-                                            [&](std::string_view k) { return equal_ignoring_case(suffix, k); });
+                                            [&](std::string_view k) { return equal_ignoring_case(suffix(), k); });
             return int(found - known.begin());  // past the list when unknown
         };
         rank = vector_layer ? place(kVector) : place(kColour);
     }
 
     bool operator<(const ChannelName& other) const {
-        if (layer != other.layer) return layer < other.layer;
+        if (layer() != other.layer()) return layer() < other.layer();
         if (rank != other.rank) return rank < other.rank;
-        return suffix < other.suffix;
+        return suffix() < other.suffix();
     }
-    bool is(std::string_view name) const { return equal_ignoring_case(suffix, name); }
+    bool is(std::string_view name) const { return equal_ignoring_case(suffix(), name); }
 };
 
 /// The file's channels in OpenImageIO's order.
-void order_as_openimageio_does(std::vector<std::unique_ptr<ChannelName>>& names) {
-    std::stable_sort(names.begin(), names.end(), [](const auto& a, const auto& b) { return a->layer < b->layer; });
+void order_as_openimageio_does(std::vector<ChannelName>& names) {
+    std::stable_sort(names.begin(), names.end(), [](const auto& a, const auto& b) { return a.layer() < b.layer(); });
     for (auto begin = names.begin(); begin != names.end();) {
-        const auto end = std::find_if(begin, names.end(), [&](const auto& n) { return n->layer != (*begin)->layer; });
+        const auto end = std::find_if(begin, names.end(), [&](const auto& n) { return n.layer() != begin->layer(); });
         const auto holds = [&](std::string_view suffix) {
-            return std::any_of(begin, end, [&](const auto& n) { return n->is(suffix); });
+            return std::any_of(begin, end, [&](const auto& n) { return n.is(suffix); });
         };
         const bool vector_layer = holds("X") && (holds("Y") || holds("Z"));
-        for (auto n = begin; n != end; ++n) (*n)->rank_in_layer(vector_layer);
+        for (auto n = begin; n != end; ++n) n->rank_in_layer(vector_layer);
         begin = end;
     }
-    std::stable_sort(names.begin(), names.end(), [](const auto& a, const auto& b) { return *a < *b; });
+    std::stable_sort(names.begin(), names.end());
 }
 
 /// A window's side, or 0 when the window is empty or wider than an int.
@@ -144,12 +142,12 @@ std::optional<std::string> read_exr(const unsigned char* bytes, std::size_t size
         // OpenImageIO frames a MIP-mapped cube map as one face; cube maps are left to it.
         const auto* envmap = header.findTypedAttribute<Imf::EnvmapAttribute>("envmap");
         if (envmap && envmap->value() == Imf::ENVMAP_CUBE) return std::nullopt;
-        std::vector<std::unique_ptr<ChannelName>> names;
+        std::vector<ChannelName> names;
         for (auto channel = header.channels().begin(); channel != header.channels().end(); ++channel) {
             const Imf::Channel& c = channel.channel();
             if ((c.type != Imf::HALF && c.type != Imf::FLOAT) || c.xSampling != 1 || c.ySampling != 1)
                 return std::nullopt;
-            names.push_back(std::make_unique<ChannelName>(channel.name()));
+            names.emplace_back(channel.name());
         }
         if (names.empty()) return std::nullopt;
         const int channels = int(names.size());
@@ -163,9 +161,8 @@ std::optional<std::string> read_exr(const unsigned char* bytes, std::size_t size
         Imf::FrameBuffer frame;
         const std::size_t pixel_stride = sizeof(float) * std::size_t(channels);
         for (int c = 0; c < channels; ++c)
-            frame.insert(names[std::size_t(c)]->full,
-                         Imf::Slice::Make(Imf::FLOAT, out.pixels.data() + c, data, pixel_stride,
-                                          pixel_stride * std::size_t(width)));
+            frame.insert(names[std::size_t(c)].full, Imf::Slice::Make(Imf::FLOAT, out.pixels.data() + c, data,
+                                                                      pixel_stride, pixel_stride * std::size_t(width)));
         file.setFrameBuffer(frame);
         file.readPixels(data.min.y, data.max.y);
 
@@ -175,8 +172,8 @@ std::optional<std::string> read_exr(const unsigned char* bytes, std::size_t size
         out.channel_names.clear();
         out.alpha_channel = -1;
         for (int c = 0; c < channels; ++c) {
-            out.channel_names.push_back(names[std::size_t(c)]->full);
-            if (out.alpha_channel < 0 && (names[std::size_t(c)]->is("A") || names[std::size_t(c)]->is("Alpha")))
+            out.channel_names.push_back(names[std::size_t(c)].full);
+            if (out.alpha_channel < 0 && (names[std::size_t(c)].is("A") || names[std::size_t(c)].is("Alpha")))
                 out.alpha_channel = c;
         }
         out.integer_data = false;

@@ -127,33 +127,20 @@ std::optional<Image> native_radiance_picture(const unsigned char* bytes, std::si
     return image;
 }
 
-/// The PNG or JPEG in `bytes` as Glint reads it (png_reader.h, jpeg_reader.h). Nothing when
-/// the bytes are another format or a file left to OpenImageIO; an ImageError naming `name`
-/// when it is too large.
-std::optional<Image> native_png_or_jpeg(const unsigned char* bytes, std::size_t size, const std::string& name,
-                                        ColorEncoding encoding) {
-    using Reader = std::optional<std::string> (*)(const unsigned char*, std::size_t, const codec::SizeCheck&,
-                                                  codec::DecodedImage&);
-    const Reader read = codec::is_png(bytes, size)    ? Reader(codec::read_png)
-                        : codec::is_jpeg(bytes, size) ? Reader(codec::read_jpeg)
-                                                      : nullptr;
-    if (!read) return std::nullopt;
+/// The PNG, JPEG or EXR in `bytes` as Glint reads it (png_reader.h, jpeg_reader.h through
+/// libpng and libjpeg; exr_reader.h through OpenEXR, decompressed on the threads the caller
+/// may use). Nothing when the bytes are another format or a file left to OpenImageIO; an
+/// ImageError naming `name` when it is too large.
+std::optional<Image> native_decoded_image(const unsigned char* bytes, std::size_t size, const std::string& name,
+                                          ColorEncoding encoding) {
     codec::DecodedImage decoded;
-    const std::optional<std::string> error = read(bytes, size, check_size, decoded);
-    if (!error) return std::nullopt;
-    if (!error->empty()) throw ImageError(name + ": " + *error);
-    return linear_image(std::move(decoded), encoding);
-}
-
-/// The EXR in `bytes` as OpenEXR alone reads it (exr_reader.h), decompressed on the threads
-/// the caller may use. Nothing when the bytes are another format or a file left to
-/// OpenImageIO; an ImageError naming `name` when it is too large.
-std::optional<Image> native_exr(const unsigned char* bytes, std::size_t size, const std::string& name,
-                                ColorEncoding encoding) {
-    if (!codec::is_exr(bytes, size)) return std::nullopt;
-    codec::DecodedImage decoded;
-    const std::optional<std::string> error =
-        codec::exr().read_memory(bytes, size, check_size, tbb::this_task_arena::max_concurrency(), decoded);
+    std::optional<std::string> error;
+    if (codec::is_png(bytes, size))
+        error = codec::read_png(bytes, size, check_size, decoded);
+    else if (codec::is_jpeg(bytes, size))
+        error = codec::read_jpeg(bytes, size, check_size, decoded);
+    else if (codec::is_exr(bytes, size))
+        error = codec::exr().read_memory(bytes, size, check_size, tbb::this_task_arena::max_concurrency(), decoded);
     if (!error) return std::nullopt;
     if (!error->empty()) throw ImageError(name + ": " + *error);
     return linear_image(std::move(decoded), encoding);
@@ -179,16 +166,15 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     file.seekg(0).read(reinterpret_cast<char*>(magic), sizeof magic);
     const auto magic_size = std::size_t(file.gcount());
     const bool radiance = codec::is_radiance_picture(magic, std::min<std::size_t>(magic_size, 2));
-    const bool exr = codec::is_exr(magic, magic_size);
-    if (radiance || exr || codec::is_png(magic, magic_size) || codec::is_jpeg(magic, magic_size)) {
+    if (radiance || codec::is_png(magic, magic_size) || codec::is_jpeg(magic, magic_size) ||
+        codec::is_exr(magic, magic_size)) {
         std::string bytes(size, '\0');
         file.clear();
         if (!file.seekg(0).read(bytes.data(), std::streamsize(size)))
             throw ImageError(path.string() + ": cannot read image: the file cannot be read whole");
         const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
         std::optional<Image> image = radiance ? native_radiance_picture(data, size, path.string())
-                                     : exr    ? native_exr(data, size, path.string(), encoding)
-                                              : native_png_or_jpeg(data, size, path.string(), encoding);
+                                              : native_decoded_image(data, size, path.string(), encoding);
         if (image) return std::move(*image);
     }
     codec::DecodedImage decoded;
@@ -208,9 +194,8 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
     check_bmp_header(bytes.size(), read_bytes, name);
     if (std::optional<Image> image = native_radiance_picture(bytes.data(), bytes.size(), name))
         return std::move(*image);
-    if (std::optional<Image> image = native_png_or_jpeg(bytes.data(), bytes.size(), name, encoding))
+    if (std::optional<Image> image = native_decoded_image(bytes.data(), bytes.size(), name, encoding))
         return std::move(*image);
-    if (std::optional<Image> image = native_exr(bytes.data(), bytes.size(), name, encoding)) return std::move(*image);
     codec::DecodedImage decoded;
     if (const std::string error = codec::oiio().read_memory(bytes.data(), bytes.size(), name, check_size, decoded);
         !error.empty())
