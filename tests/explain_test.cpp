@@ -321,6 +321,20 @@ TEST(Explain, OneSampleCanBeChosen) {
     fs::remove_all(dir);
 }
 
+TEST(Explain, TheSameTreeOnOneThreadAsOnTwo) {
+    // --threads bounds the whole process (the load and the build too), as for render; the
+    // pixel's tree must not depend on it.
+    const fs::path dir = glint_test::temp_dir();
+    const std::string args = (glint_test::kScenesDir / "bunny_glass.toml").string() + " --pixel 300,260 --spp 4 --json";
+    const glint_test::CliResult one = run_cli(kCli, "explain " + args + " --threads 1", dir);
+    const glint_test::CliResult two = run_cli(kCli, "explain " + args + " --threads 2", dir);
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    EXPECT_FALSE(json::parse(one.out).at("samples").empty());
+    EXPECT_EQ(one.out, two.out);
+    fs::remove_all(dir);
+}
+
 TEST(Explain, MistakesGetAReasonAndExitOne) {
     const fs::path dir = glint_test::temp_dir();
     const std::string scene = (glint_test::kScenesDir / "spheres.toml").string();
@@ -331,6 +345,7 @@ TEST(Explain, MistakesGetAReasonAndExitOne) {
         {scene + " --pixel 3,4 --spp 4 --sample 4",
          "--sample: expected a sample of this render's 4 per pixel, 0 to 3; got 4"},
         {scene + " --pixel 3,4 --spp 5", "--spp: expected a square number"},
+        {scene + " --pixel 3,4 --threads -1", "--threads: expected 0 (all cores) or a thread count up to 1024; got -1"},
         {scene, "--pixel is required"},
     };
     for (const auto& [args, expected] : cases) {
