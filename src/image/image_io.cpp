@@ -127,20 +127,37 @@ std::optional<Image> native_radiance_picture(const unsigned char* bytes, std::si
     return image;
 }
 
-/// The PNG, JPEG or EXR in `bytes` as Glint reads it (png_reader.h, jpeg_reader.h through
-/// libpng and libjpeg; exr_reader.h through OpenEXR, decompressed on the threads the caller
-/// may use). Nothing when the bytes are another format or a file left to OpenImageIO; an
-/// ImageError naming `name` when it is too large.
+/// Glint's own decoder of a PNG, JPEG or EXR (png_reader.h, jpeg_reader.h through libpng and
+/// libjpeg; exr_reader.h through OpenEXR, decompressed on the threads the caller may use).
+using NativeDecoder = std::optional<std::string> (*)(const unsigned char* bytes, std::size_t size,
+                                                     codec::DecodedImage& out);
+
+/// The decoder for the format `bytes` begin with, or none: the one list of the formats that
+/// read_image() reads whole and native_decoded_image() decodes.
+NativeDecoder native_decoder(const unsigned char* bytes, std::size_t size) {
+    if (codec::is_png(bytes, size))
+        return [](const unsigned char* b, std::size_t n, codec::DecodedImage& out) {
+            return codec::read_png(b, n, check_size, out);
+        };
+    if (codec::is_jpeg(bytes, size))
+        return [](const unsigned char* b, std::size_t n, codec::DecodedImage& out) {
+            return codec::read_jpeg(b, n, check_size, out);
+        };
+    if (codec::is_exr(bytes, size))
+        return [](const unsigned char* b, std::size_t n, codec::DecodedImage& out) {
+            return codec::exr().read_memory(b, n, check_size, tbb::this_task_arena::max_concurrency(), out);
+        };
+    return nullptr;
+}
+
+/// The PNG, JPEG or EXR in `bytes` as Glint reads it. Nothing when the bytes are another
+/// format or a file left to OpenImageIO; an ImageError naming `name` when it is too large.
 std::optional<Image> native_decoded_image(const unsigned char* bytes, std::size_t size, const std::string& name,
                                           ColorEncoding encoding) {
+    const NativeDecoder decode = native_decoder(bytes, size);
+    if (!decode) return std::nullopt;
     codec::DecodedImage decoded;
-    std::optional<std::string> error;
-    if (codec::is_png(bytes, size))
-        error = codec::read_png(bytes, size, check_size, decoded);
-    else if (codec::is_jpeg(bytes, size))
-        error = codec::read_jpeg(bytes, size, check_size, decoded);
-    else if (codec::is_exr(bytes, size))
-        error = codec::exr().read_memory(bytes, size, check_size, tbb::this_task_arena::max_concurrency(), decoded);
+    const std::optional<std::string> error = decode(bytes, size, decoded);
     if (!error) return std::nullopt;
     if (!error->empty()) throw ImageError(name + ": " + *error);
     return linear_image(std::move(decoded), encoding);
@@ -166,8 +183,7 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     file.seekg(0).read(reinterpret_cast<char*>(magic), sizeof magic);
     const auto magic_size = std::size_t(file.gcount());
     const bool radiance = codec::is_radiance_picture(magic, std::min<std::size_t>(magic_size, 2));
-    if (radiance || codec::is_png(magic, magic_size) || codec::is_jpeg(magic, magic_size) ||
-        codec::is_exr(magic, magic_size)) {
+    if (radiance || native_decoder(magic, magic_size)) {
         std::string bytes(size, '\0');
         file.clear();
         if (!file.seekg(0).read(bytes.data(), std::streamsize(size)))
