@@ -1,26 +1,10 @@
 #include "glint/integrators/delta_light_shadows.h"
 
-#include "glint/integrators/shading_point.h"
 #include "glint/scene/render_scene.h"
 
 #include <bit>
-#include <cstring>
 
 namespace glint {
-
-DeltaLightShadows::RayKey DeltaLightShadows::RayKey::of(const Ray& ray) {
-    const Vec3 &o = ray.origin, &d = ray.direction;
-    return {{o.x, o.y, o.z, d.x, d.y, d.z, ray.tmin, ray.tmax, ray.time}};
-}
-
-bool DeltaLightShadows::RayKey::operator==(const RayKey& other) const {
-    return std::memcmp(fields.data(), other.fields.data(), sizeof(fields)) == 0;
-}
-
-std::optional<bool> DeltaLightShadows::occluded(uint32_t light, const Ray& shadow) const {
-    if (light >= kLights || !(traced_ >> light & 1) || !(rays_[light] == RayKey::of(shadow))) return std::nullopt;
-    return (occluded_ >> light & 1) != 0;
-}
 
 std::array<DeltaLightShadows, RayPacket::kSize> trace_delta_light_shadows(
     const RenderScene& scene, std::span<const SurfaceInteraction> interactions, uint32_t hit_lanes) {
@@ -36,10 +20,8 @@ std::array<DeltaLightShadows, RayPacket::kSize> trace_delta_light_shadows(
             const Vec3 ng = facing_geometric_normal(si);
             // Light from under the surface takes another shadow ray (direct light's "through").
             if (!(ls.pdf > 0.0f) || ls.radiance.is_black() || dot(ls.direction, ng) < 0.0f) continue;
-            const Ray shadow = shadow_ray(offset_ray_origin(si.p, ng), ls, si.time);
-            lanes[k].rays_[i] = DeltaLightShadows::RayKey::of(shadow);
+            packet.set(k, shadow_ray(si.p, ng, ls, si.time));
             lanes[k].traced_ |= 1u << i;
-            packet.set(k, shadow);
         }
         if (packet.active == 0) continue;
         const uint32_t blocked = scene.occluded_packet(packet);

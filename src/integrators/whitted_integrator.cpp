@@ -38,13 +38,6 @@ float power_heuristic(float n_pdf, float other_n_pdf) {
     return 1.0f / (1.0f + r * r);
 }
 
-/// RenderScene::occluded() for a shadow ray toward light `light`, answered from `known` (the
-/// first hit's shadow rays traced in a packet) when it holds the ray.
-bool occluded(const RenderScene& scene, const Ray& shadow, uint32_t light, const DeltaLightShadows& known) {
-    if (const std::optional<bool> answer = known.occluded(light, shadow)) return *answer;
-    return scene.occluded(shadow);
-}
-
 /// `ray` as its closest-hit query left it: ending at its hit, `t`.
 Ray ray_to_hit(const Ray& ray, float t) {
     Ray r = ray;
@@ -127,15 +120,10 @@ Color WhittedIntegrator::glossy_background_weight(const RenderScene& scene, cons
 template <bool Record, bool KnownShadows>
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                       const Vec3& ng, uint32_t glossy_count, TraceContext& context) const {
+    // Explain records the shadow rays it traces itself; only the render knows some already.
+    static_assert(!(Record && KnownShadows));
     const int32_t node = context.node;
-    const Vec3 origin = offset_ray_origin(si.p, ng);
     Color sum;
-    auto blocked = [&](const Ray& shadow, uint32_t light) {
-        if constexpr (KnownShadows)
-            return occluded(scene, shadow, light, *context.first_hit_shadows);
-        else
-            return scene.occluded(shadow);
-    };
     auto add = [&](const LightSample& ls, float weight, uint32_t light) {
         if (!(ls.pdf > 0.0f) || ls.radiance.is_black()) return;
         if (!bsdf.may_reflect(ls.direction)) return;  // behind the surface, or a glass with no smooth lobe
@@ -145,9 +133,16 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         // blocks it whatever dielectric_shadows says (the glossy samples bring the light that
         // finds its way through the glass; docs/shading.md).
         const bool through = dot(ls.direction, ng) < 0.0f;
-        const Ray shadow = shadow_ray(through ? offset_ray_origin(si.p, -ng) : origin, ls, si.time);
-        if (through ? scene.occluded(shadow, DielectricShadows::Opaque) : blocked(shadow, light)) {
-            if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, true, Color());
+        // Built where it is traced or recorded: a known answer needs no ray.
+        auto shadow = [&] { return shadow_ray(si.p, through ? -ng : ng, ls, si.time); };
+        std::optional<bool> known;
+        if constexpr (KnownShadows)
+            if (!through) known = context.first_hit_shadows->occluded(light);
+        const bool blocked = known     ? *known
+                             : through ? scene.occluded(shadow(), DielectricShadows::Opaque)
+                                       : scene.occluded(shadow());
+        if (blocked) {
+            if constexpr (Record) context.tree->add_shadow_ray(node, shadow(), light, true, Color());
             return;
         }
         Color f = bsdf.eval(ls.direction);
@@ -164,7 +159,7 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         // render's instantiation, so explain differed from render in the last bit.
         [[maybe_unused]] const Color before = sum;
         sum += c;
-        if constexpr (Record) context.tree->add_shadow_ray(node, shadow, light, false, sum - before);
+        if constexpr (Record) context.tree->add_shadow_ray(node, shadow(), light, false, sum - before);
     };
     const std::vector<const Light*>& lights = scene.all_lights();
     for (uint32_t i = 0; i < lights.size(); ++i) {
@@ -209,19 +204,19 @@ Color WhittedIntegrator::glossy(const RenderScene& scene, const Bsdf& bsdf, cons
         // A refracted sample enters or leaves the material's medium, as the delta refraction does.
         const IorStack beyond =
             transmitted ? (sp.entering ? media.entered(sp.medium, ior) : media.left(sp.medium)) : media;
-        const Ray sampled(offset_ray_origin(si.p, transmitted ? -sp.ng : sp.ng), s->wi, 0.0f, kInfinity, si.time);
         context.glossy_origin = {si.p, s->pdf, count, bsdf.normal()};
         context.cone = outgoing;
         if constexpr (Record)
             context.branch = {transmitted ? RayKind::GlossyTransmission : RayKind::GlossyReflection, node, weight * w};
-        sum += w * trace_ray<Record>(scene, sampled, depth + 1, beyond, context);
+        const Vec3 origin = offset_ray_origin(si.p, transmitted ? -sp.ng : sp.ng);
+        sum += w * trace_ray<Record>(scene, Ray(origin, s->wi, 0.0f, kInfinity, si.time), depth + 1, beyond, context);
     }
     context.below_glossy = was_below;
     return sum;
 }
 
 template <bool Record>
-Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
+Color WhittedIntegrator::trace_ray(const RenderScene& scene, Ray ray, uint32_t depth, const IorStack& media,
                                    TraceContext& context) const {
     ++context.rays;
     int32_t node = -1;
@@ -230,9 +225,12 @@ Color WhittedIntegrator::trace_ray(const RenderScene& scene, const Ray& ray, uin
         node = context.tree->add_ray(branch.kind, branch.parent, depth, ray, branch.weight);
         context.node = node;
     }
-    Ray r = ray;
+    // Traced where its caller built it, not in a copy: the copy read the new ray back as one
+    // block before its field-by-field stores had reached the cache, a stall (store
+    // forwarding) of every mirror ray (docs/performance.md). intersect() moves only tmax,
+    // which radiance_from_hit() sets to the hit's t anyway.
     Hit hit;
-    const bool found = scene.intersect(r, hit);
+    const bool found = scene.intersect(ray, hit);
     return radiance_from_hit<Record>(scene, ray, found ? &hit : nullptr, depth, media, node, context);
 }
 
@@ -314,19 +312,23 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     const SpecularLobes& specular = bsdf.specular();
     // A reflection that the shading normal bends below the true surface would start inside it.
     if (!specular.reflection.is_black() && dot(specular.reflected, sp.ng) > 0.0f) {
-        const Ray reflected(offset_ray_origin(si.p, sp.ng), specular.reflected, 0.0f, kInfinity, si.time);
         if constexpr (Record) context.branch = {RayKind::Reflection, node, weight * specular.reflection};
         context.glossy_origin.pdf = 0.0f;
         context.cone = outgoing;
-        radiance += specular.reflection * trace_ray<Record>(scene, reflected, depth + 1, media, context);
+        const Vec3 origin = offset_ray_origin(si.p, sp.ng);
+        radiance +=
+            specular.reflection * trace_ray<Record>(scene, Ray(origin, specular.reflected, 0.0f, kInfinity, si.time),
+                                                    depth + 1, media, context);
     }
     if (specular.transmission > 0.0f && specular.refracted) {
         const IorStack inside = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);
-        const Ray transmitted(offset_ray_origin(si.p, -sp.ng), *specular.refracted, 0.0f, kInfinity, si.time);
         if constexpr (Record) context.branch = {RayKind::Refraction, node, weight * specular.transmission};
         context.glossy_origin.pdf = 0.0f;
         context.cone = outgoing;
-        radiance += trace_ray<Record>(scene, transmitted, depth + 1, inside, context) * specular.transmission;
+        const Vec3 origin = offset_ray_origin(si.p, -sp.ng);
+        radiance += trace_ray<Record>(scene, Ray(origin, *specular.refracted, 0.0f, kInfinity, si.time), depth + 1,
+                                      inside, context) *
+                    specular.transmission;
     }
     if (glossy_count > 0) {
         if constexpr (Record) context.node = node;

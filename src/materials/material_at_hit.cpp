@@ -6,7 +6,7 @@
 
 namespace glint {
 
-MaterialAtHit metallic_roughness_at(const Material& m, const Color& base_texture, const TextureQuery& q) {
+MaterialAtHit metallic_roughness_at(const Material& m, Color base_texture, const TextureQuery& q) {
     // glTF 2.0, material.pbrMetallicRoughness.metallicRoughnessTexture (§3.9.2): metalness in
     // the blue channel, roughness in the green, linear values (the loader reads the image as
     // data, not sRGB) that multiply metallicFactor and roughnessFactor; red and alpha are

@@ -6,7 +6,7 @@
 
 #include "glint/accel/ray_packet.h"
 #include "glint/geometry/hit.h"
-#include "glint/math/ray.h"
+#include "glint/integrators/shading_point.h"
 
 #include <array>
 #include <cstdint>
@@ -18,37 +18,39 @@ namespace glint {
 class RenderScene;
 
 /// What one lane's first hit already knows of its shadow rays toward the scene's delta
-/// lights. Keyed by the whole ray: a shading step that builds another ray (another origin
-/// or direction) traces it itself, so an answer here is always the one
-/// RenderScene::occluded() gives for that ray.
+/// lights: for each light, whether the ray Whitted's direct light casts there,
+/// shadow_ray(si.p, ng, ls, si.time) with the facing geometric normal ng, is blocked. Two bit
+/// masks, not the rays: direct light builds that very ray with the same function from the
+/// same hit, so it asks by the light's index and builds no ray at all. (Keyed by the whole
+/// ray, the table cost the dragon scene 3.5 % of its CPU time, mostly a stall on reading the
+/// new key back: docs/performance.md, "Store-forwarding stalls".) `CameraPackets.*` renders
+/// every scene with packets and with single rays and compares the images bit for bit (it
+/// failed on `handout` when the packets' rays were cut to 30 % of their length).
 class DeltaLightShadows {
 public:
     /// Shadow rays toward lights past the first kLights in the scene's order are traced one
     /// by one.
     static constexpr uint32_t kLights = 8;
 
-    /// Whether `shadow`, cast toward light `light` (its index in RenderScene::all_lights())
-    /// with the scene's own dielectric_shadows, is blocked; nothing if it was not traced here.
-    [[nodiscard]] std::optional<bool> occluded(uint32_t light, const Ray& shadow) const;
+    /// Whether that shadow ray toward light `light` (its index in
+    /// RenderScene::all_lights()), cast with the scene's own dielectric_shadows, is blocked;
+    /// nothing if it was not traced here (not a delta light, a light under the surface, a
+    /// lane without a hit).
+    [[nodiscard]] std::optional<bool> occluded(uint32_t light) const {
+        if (light >= kLights || !(traced_ >> light & 1)) return std::nullopt;
+        return (occluded_ >> light & 1) != 0;
+    }
 
 private:
     friend std::array<DeltaLightShadows, RayPacket::kSize> trace_delta_light_shadows(
         const RenderScene&, std::span<const SurfaceInteraction>, uint32_t);
-    /// A traced ray's fields, bit for bit; no initialisers, so that the render's eight
-    /// lanes of them cost nothing to set up (only traced lights are written and read).
-    struct RayKey {
-        std::array<float, 9> fields;
-        static RayKey of(const Ray& ray);
-        bool operator==(const RayKey& other) const;
-    };
-    std::array<RayKey, kLights> rays_;
     uint32_t traced_ = 0;
     uint32_t occluded_ = 0;
 };
 
 /// For the lanes of `hit_lanes` (their hits `interactions[lane]`), the shadow ray to each
-/// delta light on the side of the surface the camera ray came from, as Whitted's direct light
-/// builds it (shadow_ray from the offset hit point), traced as one packet per light.
+/// delta light on the side of the surface the camera ray came from, built as direct light
+/// builds it (shadow_ray from the hit point and normal), traced as one packet per light.
 [[nodiscard]] std::array<DeltaLightShadows, RayPacket::kSize> trace_delta_light_shadows(
     const RenderScene& scene, std::span<const SurfaceInteraction> interactions, uint32_t hit_lanes);
 

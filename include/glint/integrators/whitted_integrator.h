@@ -49,8 +49,9 @@ public:
 private:
     /// trace(), compiled twice: recording each ray into context.tree (context.branch says how
     /// the ray came about), or (the render) not, so that the render pays nothing for it.
+    /// Takes the ray by value, which it traces in place: a caller builds it in the call.
     template <bool Record>
-    [[nodiscard]] Color trace_ray(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
+    [[nodiscard]] Color trace_ray(const RenderScene& scene, Ray ray, uint32_t depth, const IorStack& media,
                                   TraceContext& context) const;
     /// trace_ray() from the ray's closest hit (`hit`, null for a miss) on: the background, or
     /// the shaded hit; `node` is the ray's node in context.tree when recording.

@@ -25,8 +25,11 @@ struct MaterialAtHit {
 
 /// The values of a material with a metallic_roughness_texture where `q` lands, where its base
 /// colour texture (times the vertex colour) is `base_texture`. Out of line: only such
-/// materials pay for it.
-[[nodiscard]] MaterialAtHit metallic_roughness_at(const Material& m, const Color& base_texture, const TextureQuery& q);
+/// materials pay for it. `base_texture` by value, in registers: taken by reference, it made
+/// GCC keep every hit's base colour in memory, where material_at_hit() read it back wider
+/// than it had been written, a stall of every untextured hit (docs/performance.md,
+/// "Store-forwarding stalls").
+[[nodiscard]] MaterialAtHit metallic_roughness_at(const Material& m, Color base_texture, const TextureQuery& q);
 
 /// `m` where a lookup `q` lands, on a mesh whose interpolated vertex colour there is
 /// `vertex_color`: without a metallic-roughness texture, kd and ka times the texture colour
