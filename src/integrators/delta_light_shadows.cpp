@@ -1,5 +1,6 @@
 #include "glint/integrators/delta_light_shadows.h"
 
+#include "glint/integrators/shading_point.h"
 #include "glint/scene/render_scene.h"
 
 #include <bit>

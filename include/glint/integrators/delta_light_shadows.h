@@ -6,7 +6,6 @@
 
 #include "glint/accel/ray_packet.h"
 #include "glint/geometry/hit.h"
-#include "glint/integrators/shading_point.h"
 
 #include <array>
 #include <cstdint>
