@@ -66,6 +66,60 @@ TEST(DeltaLightShadows, AnswerAsRenderSceneOccludedForEachLaneAndLight) {
     EXPECT_GT(lit, 10);
 }
 
+TEST(DeltaLightShadows, AnswerForTheWholeRayToTheLight) {
+    // A blocker just under the point light, 90 % of the way up from the floor: only a ray
+    // that reaches the light finds it (a table of shortened rays would call these points lit).
+    const RenderScene scene(load_toml_scene_string(R"(
+[[lights]]
+type = "point"
+position = [0, 10, 0]
+intensity = 1
+
+[[materials]]
+name = "grey"
+diffuse = 0.5
+
+[[objects]]
+type = "quad"
+corner = [-5, 0, 5]
+edge_u = [10, 0, 0]
+edge_v = [0, 0, -10]
+material = "grey"
+
+[[objects]]
+type = "mesh"
+positions = [[0, 9, -1], [1, 9, -1], [1, 9, 1], [0, 9, 1]]
+indices = [[0, 2, 1], [0, 3, 2]]
+material = "grey"
+)",
+                                                   "blocker.toml", glint_test::kScenesDir)
+                                .scene);
+    int blocked = 0, lit = 0;
+    for (int row = 0; row < 8; ++row) {
+        std::array<SurfaceInteraction, RayPacket::kSize> interactions;
+        for (uint32_t k = 0; k < RayPacket::kSize; ++k) {
+            // Floor points from x = -4 to 4: those with x > 0 lie in the blocker's shadow.
+            Ray ray(Vec3(-3.9f + 1.1f * float(k), 5.0f, -2.0f + 0.5f * float(row)), Vec3(0, -1, 0));
+            Hit hit;
+            ASSERT_TRUE(scene.intersect(ray, hit));
+            interactions[k] = scene.interaction(ray, hit);
+        }
+        const std::array<DeltaLightShadows, RayPacket::kSize> shadows =
+            trace_delta_light_shadows(scene, interactions, RayPacket::kAllLanes);
+        for (uint32_t k = 0; k < RayPacket::kSize; ++k) {
+            const SurfaceInteraction& si = interactions[k];
+            const Ray shadow = whitted_shadow_ray(si, scene.all_lights()[0]->sample(si.p, Vec2()));
+            const std::optional<bool> known = shadows[k].occluded(0);
+            ASSERT_TRUE(known.has_value()) << "row " << row << ", lane " << k;
+            EXPECT_EQ(*known, scene.occluded(shadow)) << "row " << row << ", lane " << k;
+            EXPECT_EQ(*known, si.p.x > 0.0f) << "row " << row << ", lane " << k;
+            ++(*known ? blocked : lit);
+        }
+    }
+    EXPECT_GT(blocked, 10);
+    EXPECT_GT(lit, 10);
+}
+
 TEST(DeltaLightShadows, LeaveLightFromUnderTheSurfaceToDirectLight) {
     // Seen from below, the floor's lights are on the other side: direct light casts those
     // shadow rays from under the surface with opaque dielectrics, so none is traced here.

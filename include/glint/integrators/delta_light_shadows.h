@@ -22,9 +22,10 @@ class RenderScene;
 /// masks, not the rays: direct light builds that very ray with the same function from the
 /// same hit, so it asks by the light's index and builds no ray at all. (Keyed by the whole
 /// ray, the table cost the dragon scene 3.5 % of its CPU time, mostly a stall on reading the
-/// new key back: docs/performance.md, "Store-forwarding stalls".) `CameraPackets.*` renders
-/// every scene with packets and with single rays and compares the images bit for bit (it
-/// failed on `handout` when the packets' rays were cut to 30 % of their length).
+/// new key back: docs/performance.md, "Store-forwarding stalls".) With the packets' rays cut
+/// to 30 % of their length, `DeltaLightShadows.AnswerForTheWholeRayToTheLight` failed, and
+/// so did `CameraPackets.*`, which renders every scene with packets and with single rays and
+/// compares the images bit for bit.
 class DeltaLightShadows {
 public:
     /// Shadow rays toward lights past the first kLights in the scene's order are traced one
