@@ -23,6 +23,15 @@ Ray whitted_shadow_ray(const SurfaceInteraction& si, const LightSample& ls) {
     return shadow_ray(si.p, ng, ls, si.time);
 }
 
+/// `out`: where the ray straight down from `origin` first hits `scene` (a first hit of a
+/// camera packet, as Li_given_first_hits() has it).
+void first_hit_below(const RenderScene& scene, const Vec3& origin, SurfaceInteraction& out) {
+    Ray ray(origin, Vec3(0, -1, 0));
+    Hit hit;
+    ASSERT_TRUE(scene.intersect(ray, hit));
+    out = scene.interaction(ray, hit);
+}
+
 TEST(DeltaLightShadows, AnswerAsRenderSceneOccludedForEachLaneAndLight) {
     // Two point lights over a floor with a grid of spheres casting shadows on it.
     const RenderScene scene(load_toml_scene(glint_test::kScenesDir / "spheres.toml").scene);
@@ -35,10 +44,8 @@ TEST(DeltaLightShadows, AnswerAsRenderSceneOccludedForEachLaneAndLight) {
         std::array<SurfaceInteraction, RayPacket::kSize> interactions;
         uint32_t hit_lanes = 0;
         for (uint32_t k = 0; k + 1 < RayPacket::kSize; ++k) {
-            Ray ray(Vec3(-6.0f + 1.7f * float(k), 30.0f, -6.0f + 0.5f * float(row)), Vec3(0, -1, 0));
-            Hit hit;
-            ASSERT_TRUE(scene.intersect(ray, hit));
-            interactions[k] = scene.interaction(ray, hit);
+            ASSERT_NO_FATAL_FAILURE(first_hit_below(
+                scene, Vec3(-6.0f + 1.7f * float(k), 30.0f, -6.0f + 0.5f * float(row)), interactions[k]));
             hit_lanes |= 1u << k;
         }
         const std::array<DeltaLightShadows, RayPacket::kSize> shadows =
@@ -97,13 +104,10 @@ material = "grey"
     int blocked = 0, lit = 0;
     for (int row = 0; row < 8; ++row) {
         std::array<SurfaceInteraction, RayPacket::kSize> interactions;
-        for (uint32_t k = 0; k < RayPacket::kSize; ++k) {
-            // Floor points from x = -4 to 4: those with x > 0 lie in the blocker's shadow.
-            Ray ray(Vec3(-3.9f + 1.1f * float(k), 5.0f, -2.0f + 0.5f * float(row)), Vec3(0, -1, 0));
-            Hit hit;
-            ASSERT_TRUE(scene.intersect(ray, hit));
-            interactions[k] = scene.interaction(ray, hit);
-        }
+        // Floor points from x = -4 to 4: those with x > 0 lie in the blocker's shadow.
+        for (uint32_t k = 0; k < RayPacket::kSize; ++k)
+            ASSERT_NO_FATAL_FAILURE(first_hit_below(
+                scene, Vec3(-3.9f + 1.1f * float(k), 5.0f, -2.0f + 0.5f * float(row)), interactions[k]));
         const std::array<DeltaLightShadows, RayPacket::kSize> shadows =
             trace_delta_light_shadows(scene, interactions, RayPacket::kAllLanes);
         for (uint32_t k = 0; k < RayPacket::kSize; ++k) {
