@@ -135,14 +135,17 @@ inline __m256 plus_product(__m256 a, __m256 b, __m256 c) {
 }
 #endif
 
-/// The watertight test's per-ray constants broadcast for four lanes.
+/// The watertight test's per-ray constants broadcast for four lanes. It keeps no copy of
+/// the ray: its caller has just written the ray field by field, and the copy read it back
+/// 32 bytes at once, a load the CPU cannot take from those stores and waits on; in half the
+/// runs of `glint-bench` (as the program's addresses fell) the bunny's camera rays then
+/// traced at 0.97-1.00 of Embree instead of 1.32 (docs/performance.md, "Fresh memory on an
+/// idle machine").
 struct BlockRay {
-    Ray ray;
     WatertightRay w;
     __m128 ox, oy, oz, sx, sy, sz;
-    explicit BlockRay(const Ray& ray_)
-        : ray(ray_),
-          w(ray.direction),
+    explicit BlockRay(const Ray& ray)
+        : w(ray.direction),
           ox(_mm_set1_ps(ray.origin[w.kx])),
           oy(_mm_set1_ps(ray.origin[w.ky])),
           oz(_mm_set1_ps(ray.origin[w.kz])),
