@@ -10,6 +10,10 @@ that load from other processes falls on every build alike (docs/performance.md u
         machine). Example:
         bench/alternate.py process 9 '{bin} render mesh.ply -o /tmp/x.png -q --width 1 --height 1' \\
             /tmp/glint-before build/glint
+        With --idle SECONDS first (bench/alternate.py --idle 3 process ...), the machine
+        idles that long before each run, as between a user's renders: on a virtual machine
+        whose host takes back the guest's free memory, fresh memory then costs more than in
+        runs back to back (docs/performance.md, "Fresh memory on an idle machine").
 
     bench/alternate.py build RUNS MESH THREADS GLINT_BENCH [GLINT_BENCH ...]
         Glint's BVH build time as glint-bench reports it (--rays primary --reps 3 --json, the
@@ -35,11 +39,12 @@ def children_cpu_seconds():
     return usage.ru_utime + usage.ru_stime
 
 
-def process_times(runs, command, binaries):
+def process_times(runs, command, binaries, idle_seconds):
     """Per binary, (wall ms, CPU ms) of each run."""
     times = {b: [] for b in binaries}
     for _ in range(runs):
         for b in binaries:
+            time.sleep(idle_seconds)
             cpu_start, start = children_cpu_seconds(), time.perf_counter()
             subprocess.run(command.format(bin=b), shell=True, check=True, stdout=subprocess.DEVNULL,
                            stderr=subprocess.DEVNULL)
@@ -94,8 +99,11 @@ def print_rates(rates):
 
 def main():
     args = sys.argv[1:]
+    idle_seconds = 0.0
+    if len(args) >= 2 and args[0] == "--idle":
+        idle_seconds, args = float(args[1]), args[2:]
     if len(args) >= 4 and args[0] == "process":
-        print_process_times(process_times(int(args[1]), args[2], args[3:]))
+        print_process_times(process_times(int(args[1]), args[2], args[3:], idle_seconds))
         return
     if len(args) >= 5 and args[0] == "build":
         times = build_times(int(args[1]), args[2], args[3], args[4:])
