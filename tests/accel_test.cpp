@@ -96,7 +96,7 @@ MeshData icosphere(int levels) {
             if (inserted) m.positions.push_back(normalize(m.positions[a] + m.positions[b]));
             return it->second;
         };
-        glint::LargeArray<uint32_t> next;
+        std::vector<uint32_t> next;
         for (size_t t = 0; t < m.indices.size(); t += 3) {
             const uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
             const uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);

@@ -72,9 +72,9 @@ TEST(AssetTangentFrames, TheAvocadosOwnTangentsAgreeWithTheComputedOnes) {
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "no shared data at " << path;
     const glint::GltfScene file = glint::load_gltf_scene(path);
     glint::MeshData data = only_mesh(file.loaded.scene).data();
-    const glint::LargeArray<glint::Tangent> stored = data.tangents;
+    const std::vector<glint::Tangent> stored = data.tangents;
     data.tangents.clear();
-    const glint::LargeArray<glint::Tangent> computed = glint::compute_tangents(data);
+    const std::vector<glint::Tangent> computed = glint::compute_tangents(data);
     ASSERT_EQ(stored.size(), computed.size());
     ASSERT_GT(stored.size(), 400u);
     double angles = 0.0;

@@ -70,7 +70,7 @@ TEST(MeshFileBytes, EverythingComesBackAsItWas) {
     EXPECT_EQ(back.meshes[1], nullptr);
     EXPECT_EQ(back.meshes[0]->name(), "Cube");
     const glint::MeshData& data = back.meshes[0]->data();
-    EXPECT_EQ(data.indices, (glint::LargeArray<uint32_t>{0, 1, 2, 0, 2, 3}));
+    EXPECT_EQ(data.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
     EXPECT_EQ(data.positions[3].z, 1.0f);
     EXPECT_EQ(data.normals[3].x, 1.0f);
     EXPECT_EQ(data.uvs[3].y, 0.5f);
@@ -97,10 +97,10 @@ TEST(MeshFileBytes, EverythingComesBackAsItWas) {
     EXPECT_EQ(back.material_images[0], nullptr);
     ASSERT_NE(back.material_images[1], nullptr);
     EXPECT_EQ(back.material_images[1]->width, 2);
-    EXPECT_EQ(back.material_images[1]->pixels, (glint::LargeArray<float>{1, 2, 3, 4, 5, 6}));
+    EXPECT_EQ(back.material_images[1]->pixels, (std::vector<float>{1, 2, 3, 4, 5, 6}));
     ASSERT_EQ(back.material_normal_images.size(), 2u);
     ASSERT_NE(back.material_normal_images[0], nullptr);
-    EXPECT_EQ(back.material_normal_images[0]->pixels, (glint::LargeArray<float>{0.5f, 0.5f, 1.0f}));
+    EXPECT_EQ(back.material_normal_images[0]->pixels, (std::vector<float>{0.5f, 0.5f, 1.0f}));
     EXPECT_EQ(back.material_normal_images[1], nullptr);
     EXPECT_EQ(back.declared_up, glint::UpAxis::Z);
     EXPECT_EQ(back.warnings, sample_file().warnings);

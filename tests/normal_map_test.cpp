@@ -51,7 +51,7 @@ void expect_direction_near(const Vec3& got, const Vec3& want, float tolerance, c
 }  // namespace
 
 TEST(TangentSpace, TangentsFollowUAndTheSignMakesGreenPointUpInTheImage) {
-    const glint::LargeArray<Tangent> plain = compute_tangents(square(false));
+    const std::vector<Tangent> plain = compute_tangents(square(false));
     ASSERT_EQ(plain.size(), 4u);
     for (const Tangent& t : plain) {
         expect_direction_near(t.direction, Vec3(1, 0, 0), 1e-6f, "tangent along +u = +x");

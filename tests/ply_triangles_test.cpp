@@ -103,8 +103,8 @@ struct PlyVariant {
 };
 
 struct IcosphereData {
-    glint::LargeArray<glint::Vec3> positions;
-    glint::LargeArray<uint32_t> indices;
+    std::vector<glint::Vec3> positions;
+    std::vector<uint32_t> indices;
 };
 
 const IcosphereData& icosphere() {

@@ -641,7 +641,7 @@ TEST(TomlScene, TrianglePerVertexMaterials) {
     const LoadedScene s = load(kGeometry);
     const auto* tri = dynamic_cast<const TriangleMesh*>(s.scene.objects()[2].shape.get());
     ASSERT_NE(tri, nullptr);
-    EXPECT_EQ(tri->data().vertex_materials, (glint::LargeArray<uint32_t>{0, 1, 2}));
+    EXPECT_EQ(tri->data().vertex_materials, (std::vector<uint32_t>{0, 1, 2}));
 }
 
 TEST(TomlScene, HeightfieldAddsGridHeightsAndWaves) {

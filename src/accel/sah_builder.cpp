@@ -218,7 +218,7 @@ struct BinMapping {
 
 class Builder {
 public:
-    Builder(LargeArray<PrimRef>& refs, const BvhBuildConfig& config, UninitializedLargeArray<BvhNode>& nodes)
+    Builder(std::vector<PrimRef>& refs, const BvhBuildConfig& config, UninitializedArray<BvhNode>& nodes)
         : refs_(refs), config_(config), nodes_(nodes) {}
 
     void build(uint32_t node_index, uint32_t begin, uint32_t end, int depth) {
@@ -353,9 +353,9 @@ private:
         return true;
     }
 
-    LargeArray<PrimRef>& refs_;
+    std::vector<PrimRef>& refs_;
     const BvhBuildConfig& config_;
-    UninitializedLargeArray<BvhNode>& nodes_;
+    UninitializedArray<BvhNode>& nodes_;
     std::atomic<uint32_t> node_count_{1};
 };
 
@@ -366,14 +366,14 @@ BinaryBvh build_binary_bvh(std::span<const Bounds3> primitive_bounds, const BvhB
         throw std::invalid_argument("BvhBuildConfig::bin_count must be in [2, 64]");
     if (config.max_leaf_size == 0) throw std::invalid_argument("BvhBuildConfig::max_leaf_size must be positive");
     BinaryBvh bvh;
-    LargeArray<PrimRef> refs;
+    std::vector<PrimRef> refs;
     refs.reserve(primitive_bounds.size());
     for (uint32_t i = 0; i < primitive_bounds.size(); ++i)
         if (!primitive_bounds[i].empty()) refs.emplace_back(primitive_bounds[i], i);
     if (refs.empty()) return bvh;
     const auto n = static_cast<uint32_t>(refs.size());
     // A binary tree with n leaves at most has 2n - 1 nodes; children are claimed in pairs.
-    // Left unwritten (UninitializedLargeArray): the builder writes each node it claims, on
+    // Left unwritten (UninitializedArray): the builder writes each node it claims, on
     // the thread that claims it, and leaves of four primitives claim about a quarter of
     // them, so most of the array is never touched (zeroing it was 40 MB of page faults on
     // one thread for the full dragon).

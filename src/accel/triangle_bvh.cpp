@@ -8,7 +8,7 @@ namespace glint {
 
 void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_t> indices) {
     const size_t count = indices.size() / 3;
-    LargeArray<Bounds3> boxes(count);
+    std::vector<Bounds3> boxes(count);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1u << 14), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t t = r.begin(); t < r.end(); ++t) {
             Bounds3 b;

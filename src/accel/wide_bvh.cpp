@@ -33,7 +33,7 @@ void for_each_index(bool parallel, uint32_t count, const Body& body) {
 /// order), so that the tree is the same whatever the number of threads.
 class Collapser {
 public:
-    Collapser(const BinaryBvh& binary, WideNodeArray& nodes, LargeArray<WideLeaf>& leaves)
+    Collapser(const BinaryBvh& binary, WideNodeArray& nodes, std::vector<WideLeaf>& leaves)
         : binary_(binary), nodes_(nodes), leaves_(leaves), parallel_(binary.nodes.size() >= kParallelCollapseNodes) {}
 
     void collapse() {
@@ -244,10 +244,10 @@ private:
 
     const BinaryBvh& binary_;
     WideNodeArray& nodes_;
-    LargeArray<WideLeaf>& leaves_;
+    std::vector<WideLeaf>& leaves_;
     const bool parallel_;
-    LargeArray<Plan> plan_;   // per binary node
-    LargeArray<Size> sizes_;  // per binary node that becomes a wide node
+    std::vector<Plan> plan_;   // per binary node
+    std::vector<Size> sizes_;  // per binary node that becomes a wide node
 };
 
 }  // namespace

@@ -70,8 +70,8 @@ std::string mesh_name(const aiMesh* mesh, unsigned index) {
 /// direction "up" in the image (assimp's glTF reader stores normal × tangent · w, so the
 /// sign is glTF's w). Empty, so that the mesh computes its own, when one is unusable:
 /// non-finite, or parallel to its normal.
-LargeArray<Tangent> file_tangents(const aiMesh* mesh) {
-    LargeArray<Tangent> tangents(mesh->mNumVertices);
+std::vector<Tangent> file_tangents(const aiMesh* mesh) {
+    std::vector<Tangent> tangents(mesh->mNumVertices);
     for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
         const Vec3 stored_normal(mesh->mNormals[v].x, mesh->mNormals[v].y, mesh->mNormals[v].z);
         const Vec3 t(mesh->mTangents[v].x, mesh->mTangents[v].y, mesh->mTangents[v].z);

@@ -88,7 +88,7 @@ bool write_all(int fd, std::string_view bytes) {
 
 /// What the child wrote to `fd`, a memory file: its tag (the first byte, 0 for none) and the
 /// bytes after it, read straight into place (no copy that drops the tag afterwards).
-std::pair<char, LargeArray<char>> read_result(int fd, const std::string& context) {
+std::pair<char, std::vector<char>> read_result(int fd, const std::string& context) {
     struct stat info {};
     if (::fstat(fd, &info) != 0)
         throw SceneError(context + ": lost what the importer process read: " + std::strerror(errno));
@@ -103,7 +103,7 @@ std::pair<char, LargeArray<char>> read_result(int fd, const std::string& context
     };
     char tag = '\0';
     read_at(&tag, 1, 0);
-    LargeArray<char> bytes(std::size_t(info.st_size) - 1);
+    std::vector<char> bytes(std::size_t(info.st_size) - 1);
     read_at(bytes.data(), bytes.size(), 1);
     return {tag, std::move(bytes)};
 }
@@ -129,7 +129,7 @@ std::string first_line(const std::string& text) {
 
 }  // namespace
 
-LargeArray<char> run_isolated(const std::function<std::string()>& work, const std::string& context) {
+std::vector<char> run_isolated(const std::function<std::string()>& work, const std::string& context) {
     std::fflush(nullptr);  // or the child would inherit, and print, the parent's pending output
     // The result goes to a memory file, not a pipe: the child can write all of it without
     // waiting for the parent, which reads the child's messages until they end.

@@ -16,18 +16,16 @@
 ///
 /// Internal to src/assets.
 
-#include "glint/util/large_array.h"
-
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace glint {
 
-/// Run `work` in a child process and return the bytes it returned, on huge pages (a mesh's
-/// bytes are megabytes, read once: util/large_array.h). What `work` throws comes
+/// Run `work` in a child process and return the bytes it returned. What `work` throws comes
 /// back as a SceneError with the same message (prefixed by "`context`: " unless it is a
 /// SceneError, which names its file already). A child that dies throws SceneError
 /// "`context`: assimp crashed on this file (signal): first line it printed; ...".
-[[nodiscard]] LargeArray<char> run_isolated(const std::function<std::string()>& work, const std::string& context);
+[[nodiscard]] std::vector<char> run_isolated(const std::function<std::string()>& work, const std::string& context);
 
 }  // namespace glint

@@ -83,7 +83,7 @@ MeshFile read_mesh_file(const std::filesystem::path& path, ReadMode mode) {
 MeshFile read_mesh_file_with_assimp(const std::filesystem::path& path, ReadMode mode) {
     const std::string context = path.string() + ": cannot read mesh file";
     const assimp_import::Functions& functions = assimp();
-    const LargeArray<char> bytes = run_isolated(
+    const std::vector<char> bytes = run_isolated(
         [&] {
             assimp_import::Outcome outcome;
             functions.read_file(path.string(), mode, context, outcome);
@@ -103,7 +103,7 @@ MeshFile read_gltf_geometry(const gltf::Document& doc) {
     const std::string glb = gltf::geometry_glb(doc, warnings);
     const std::string context = doc.path.string() + ": cannot read the geometry";
     const assimp_import::Functions& functions = assimp();
-    const LargeArray<char> bytes = run_isolated(
+    const std::vector<char> bytes = run_isolated(
         [&] {
             assimp_import::Outcome outcome;
             functions.read_glb(glb, doc.path.string(), context, outcome);

@@ -2,8 +2,6 @@
 
 #include "ply_header.h"
 
-#include "glint/util/large_array.h"
-
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -212,8 +210,7 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     if (vertices.count > available / record || faces.count > available / face_record ||
         vertices.count * record + faces.count * face_record != available)
         return std::nullopt;
-    // In huge pages (large_array.h): a scan's data is tens of megabytes, read once.
-    LargeArray<char> bytes(available);
+    std::vector<char> bytes(available);
     if (!in.seekg(std::streamoff(header->data_offset)) || !in.read(bytes.data(), std::streamsize(available)) ||
         in.peek() != std::ifstream::traits_type::eof())
         return std::nullopt;

@@ -21,7 +21,7 @@ float corner_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 }  // namespace
 
-LargeArray<Tangent> compute_tangents(const MeshData& data) {
+std::vector<Tangent> compute_tangents(const MeshData& data) {
     const std::size_t n = data.positions.size();
     if (data.normals.size() != n || data.uvs.size() != n) return {};
     std::vector<Vec3> along_u(n), up_in_image(n);
@@ -37,7 +37,7 @@ LargeArray<Tangent> compute_tangents(const MeshData& data) {
             up_in_image[i[k]] += up * angle;
         }
     }
-    LargeArray<Tangent> tangents(n);
+    std::vector<Tangent> tangents(n);
     for (std::size_t v = 0; v < n; ++v) {
         const Vec3& normal = data.normals[v];
         Vec3 t = unit_or_zero(along_u[v] - normal * dot(normal, along_u[v]));

@@ -47,18 +47,12 @@ bool degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
     return !(length(cross(e1, e2)) > 1e-7f * length(e1) * length(e2));
 }
 
-/// A scene file's list as MeshData keeps it (inline lists are small: a copy).
-template <typename T>
-LargeArray<T> as_large_array(const std::vector<T>& list) {
-    return {list.begin(), list.end()};
-}
-
 /// Normals, uvs and per-vertex materials (each optional, one per vertex), then the mesh.
 std::shared_ptr<Shape> finish_mesh(const ParamTable& t, const BuildContext& context, MeshData data,
                                    std::string_view list_key) {
-    data.normals = as_large_array(t.vec3_list("normals", false));
-    data.uvs = as_large_array(t.vec2_list("uvs"));
-    data.vertex_materials = as_large_array(material_list(t, context));
+    data.normals = t.vec3_list("normals", false);
+    data.uvs = t.vec2_list("uvs");
+    data.vertex_materials = material_list(t, context);
     const std::size_t n = data.positions.size();
     auto check_size = [&](std::string_view key, std::size_t size) {
         if (size != 0 && size != n) t.fail(key, fmt::format("one entry per vertex ({})", n));
@@ -77,7 +71,7 @@ std::shared_ptr<Shape> finish_mesh(const ParamTable& t, const BuildContext& cont
 
 std::shared_ptr<Shape> TriangleMesh::triangle_from_params(const ParamTable& t, const BuildContext& context) {
     MeshData data;
-    data.positions = as_large_array(t.vec3_list("vertices", true));
+    data.positions = t.vec3_list("vertices", true);
     if (data.positions.size() != 3) t.fail("vertices", "three corners [[x, y, z], [x, y, z], [x, y, z]]");
     if (degenerate(data.positions[0], data.positions[1], data.positions[2]))
         throw_scene_error(t.find("vertices")->where(),
@@ -90,7 +84,7 @@ std::shared_ptr<Shape> TriangleMesh::triangle_from_params(const ParamTable& t, c
 
 std::shared_ptr<Shape> TriangleMesh::from_params(const ParamTable& t, const BuildContext& context) {
     MeshData data;
-    data.positions = as_large_array(t.vec3_list("positions", true));
+    data.positions = t.vec3_list("positions", true);
     const auto indices = index_values(t);
     for (std::size_t k = 0; k < indices.size(); ++k) {
         const int64_t i = indices[k]->as_integer(t.name_of("indices"));

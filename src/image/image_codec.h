@@ -18,8 +18,6 @@
 /// boundary); each returns "" on success and otherwise what went wrong, worded to follow
 /// "NAME: ".
 
-#include "glint/util/large_array.h"
-
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -37,9 +35,8 @@ namespace glint::codec {
 /// An image as its file stores it, its values converted to floats (8-bit 255 → 1.0).
 struct DecodedImage {
     int width = 0, height = 0, channels = 0;
-    /// On huge pages (util/large_array.h), and handed on to the Image without a copy: a
-    /// 2048×2048 RGB texture's 50 MB in small pages cost 12,288 page faults.
-    LargeArray<float> pixels;
+    /// Handed on to the Image without a copy: a 2048×2048 RGB texture's floats are 50 MB.
+    std::vector<float> pixels;
     std::vector<std::string> channel_names;
     /// Stored as integers (display-encoded colour unless tagged linear) rather than floats.
     bool integer_data = false;

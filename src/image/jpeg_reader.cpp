@@ -92,7 +92,7 @@ std::optional<std::string> read_jpeg(const unsigned char* bytes, std::size_t siz
     if (std::string refused = check(width, height, channels); !refused.empty()) return refused;
 
     const std::size_t row_bytes = std::size_t(width) * std::size_t(channels);
-    LargeArray<unsigned char> samples(row_bytes * std::size_t(height));
+    std::vector<unsigned char> samples(row_bytes * std::size_t(height));
     if (!read_rows(read, samples.data(), row_bytes)) return std::nullopt;
 
     out.width = width;

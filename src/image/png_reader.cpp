@@ -109,7 +109,7 @@ std::optional<std::string> read_png(const unsigned char* bytes, std::size_t size
     const int width = int(header.width), height = int(header.height), channels = header.channels;
     if (std::string refused = check(width, height, channels); !refused.empty()) return refused;
 
-    LargeArray<unsigned char> samples(header.row_bytes * header.height);
+    std::vector<unsigned char> samples(header.row_bytes * header.height);
     std::vector<png_bytep> rows(header.height);
     for (png_uint_32 y = 0; y < header.height; ++y) rows[y] = samples.data() + y * header.row_bytes;
     if (!read_rows(read.png, rows.data())) return std::nullopt;

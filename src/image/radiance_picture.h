@@ -26,7 +26,7 @@ namespace glint::codec {
 [[nodiscard]] bool is_radiance_picture(const unsigned char* bytes, std::size_t size);
 
 /// Decode the Radiance picture in `bytes` into `out` (three linear channels R, G, B, straight
-/// into the image's huge pages). Returns "" on success and otherwise what is wrong, worded to
+/// into the image's pixels). Returns "" on success and otherwise what is wrong, worded to
 /// follow "NAME: "; nothing when the picture is one to read through OpenImageIO instead
 /// (another orientation). `check` sees the header's size before any pixel is allocated.
 [[nodiscard]] std::optional<std::string> read_radiance_picture(const unsigned char* bytes, std::size_t size,

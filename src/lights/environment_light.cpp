@@ -3,7 +3,6 @@
 #include "glint/math/constants.h"
 #include "glint/math/frame.h"
 #include "glint/sampling/warp.h"
-#include "glint/util/large_array.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,17 +34,17 @@ float pixel_luminance(const Image& image, int x, int y) {
 /// The sampling weight of each pixel: the mean of the bilinear lookup over the pixel (the
 /// tent filter integrated over a pixel weighs its own texel 3/4 and each neighbour 1/8 per
 /// axis; where the lookup wraps, an equirect map's longitude, so does this, elsewhere it
-/// clamps) times the layout's dω/(du dv) at its centre. Row by row in parallel, on huge
-/// pages: built serially in 4 KiB pages, the sky's table was a quarter of the 85 ms of a
-/// 1×1 render lit by a 1k sky, most of it first touches of fresh pages (`perf record`).
-LargeArray<float> pixel_weights(const Image& image, BackgroundKind kind) {
+/// clamps) times the layout's dω/(du dv) at its centre. Row by row in parallel: built
+/// serially, the sky's table was a quarter of the 85 ms of a 1×1 render lit by a 1k sky,
+/// most of it first touches of fresh pages (`perf record`).
+std::vector<float> pixel_weights(const Image& image, BackgroundKind kind) {
     const int w = image.width, h = image.height;
     const bool wrap_x = kind == BackgroundKind::Equirectangular;
     auto column = [&](int x) { return wrap_x ? (x + w) % w : std::clamp(x, 0, w - 1); };
     const auto at = [w](int x, int y) { return std::size_t(y) * std::size_t(w) + std::size_t(x); };
     // The horizontal pass reads its row's luminance from a row of its own; the vertical
     // pass needs the rows above and below, so the horizontal result is kept whole.
-    LargeArray<float> across(std::size_t(w) * std::size_t(h)), weights(across.size());
+    std::vector<float> across(std::size_t(w) * std::size_t(h)), weights(across.size());
     tbb::parallel_for(0, h, [&](int y) {
         std::vector<float> luminance(static_cast<std::size_t>(w));
         for (int x = 0; x < w; ++x) luminance[std::size_t(x)] = pixel_luminance(image, x, y);
@@ -73,7 +72,7 @@ std::unique_ptr<EnvironmentLight> EnvironmentLight::of(const Background& backgro
         return std::unique_ptr<EnvironmentLight>(new EnvironmentLight(background, std::nullopt));
     }
     if (!(background.scale() > 0.0f)) return nullptr;
-    const LargeArray<float> weights = pixel_weights(*image, background.kind());
+    const std::vector<float> weights = pixel_weights(*image, background.kind());
     const bool any = std::any_of(weights.begin(), weights.end(), [](float w) { return w > 0.0f; });
     if (!any) return nullptr;
     return std::unique_ptr<EnvironmentLight>(

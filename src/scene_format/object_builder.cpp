@@ -60,7 +60,7 @@ void import_file(const ParamTable& t, const std::optional<Transform>& transform,
 }
 
 /// The per-vertex materials of a mesh (handout §6.1.1), if it has them.
-const LargeArray<uint32_t>* vertex_materials(const Shape& shape) {
+const std::vector<uint32_t>* vertex_materials(const Shape& shape) {
     const auto* mesh = dynamic_cast<const TriangleMesh*>(&shape);
     return mesh && !mesh->data().vertex_materials.empty() ? &mesh->data().vertex_materials : nullptr;
 }
@@ -107,7 +107,7 @@ void add_object(const ParamTable& t, const ShapeLibrary& library, BuildContext& 
     }
     // A mesh with per-vertex materials takes its first vertex's as the object's (any will
     // do: shading blends the three corners'); other shapes need `material`.
-    const LargeArray<uint32_t>* per_vertex = vertex_materials(*shape);
+    const std::vector<uint32_t>* per_vertex = vertex_materials(*shape);
     const ParamValue* m = per_vertex ? t.find("material") : &t.require("material", "a material name");
     if (m && per_vertex) t.fail("material", "either one material or per-vertex materials, not both");
     const uint32_t material = m ? context.material(*m, ValueName(t, "material")) : per_vertex->front();

@@ -5,7 +5,6 @@
 /// level collapse the binary tree into 8-wide nodes (`WideBvh`).
 
 #include "glint/math/bounds3.h"
-#include "glint/util/large_array.h"
 #include "glint/util/uninitialized_allocator.h"
 
 #include <cstdint>
@@ -38,8 +37,8 @@ static_assert(sizeof(BvhNode) == 32);
 /// A binary BVH: node 0 is the root (no nodes when there is nothing to hit), leaves index
 /// `order`, which maps leaf entries to the caller's primitive indices.
 struct BinaryBvh {
-    UninitializedLargeArray<BvhNode> nodes;
-    LargeArray<uint32_t> order;
+    UninitializedArray<BvhNode> nodes;
+    std::vector<uint32_t> order;
 };
 
 /// Above this depth the SAH decides splits; from it on (only for pathological inputs) the

@@ -15,7 +15,7 @@
 #include "glint/accel/wide_bvh.h"
 #include "glint/geometry/hit.h"
 #include "glint/geometry/triangle.h"
-#include "glint/util/uninitialized_allocator.h"
+#include "glint/util/huge_page_array.h"
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -77,10 +77,8 @@ public:
 
 private:
     WideBvh wide_;
-    // In huge pages from 2 MiB on: for the 871k-triangle dragon one fault per 2 MiB instead
-    // of 512 while building, and fewer TLB misses while tracing (docs/performance.md, "The
-    // build's page faults").
-    UninitializedLargeArray<TriangleBlock> blocks_;
+    // Every ray reads them: in huge pages from 2 MiB on (huge_page_array.h).
+    HugePageArray<TriangleBlock> blocks_;
 };
 
 namespace detail {

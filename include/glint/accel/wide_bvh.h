@@ -15,7 +15,6 @@
 #include "glint/accel/traversal_count.h"
 #include "glint/math/bounds3.h"
 #include "glint/math/ray.h"
-#include "glint/util/large_array.h"
 #include "glint/util/uninitialized_allocator.h"
 
 #include <bit>
@@ -124,11 +123,12 @@ private:
                                                              float tmax, uint32_t* child, float* t_enter);
 
     // The nodes stay in ordinary memory: in huge pages the dragon's camera rays and packets
-    // ran slower in the session measured (docs/performance.md, "The build's page faults"),
-    // while TriangleBvh's blocks, three quarters of the bytes, gain from them.
+    // ran slower on one machine and the same on another (docs/performance.md, "The build's
+    // page faults"), while the triangle blocks, three quarters of the bytes, gain from them
+    // (huge_page_array.h).
     WideNodeArray nodes_;
-    LargeArray<WideLeaf> leaves_;
-    LargeArray<uint32_t> order_;
+    std::vector<WideLeaf> leaves_;
+    std::vector<uint32_t> order_;
     Bounds3 bounds_;
 };
 

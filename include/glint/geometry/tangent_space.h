@@ -6,7 +6,7 @@
 
 #include "glint/math/vec3.h"
 
-#include "glint/util/large_array.h"
+#include <vector>
 
 namespace glint {
 
@@ -28,6 +28,6 @@ struct Tangent {
 /// have no uv map gets a perpendicular of its normal. Vertices that share an index share a
 /// frame: seams where the uvs differ already have their own vertices (glTF, OBJ after
 /// import), which is where MikkTSpace would split them.
-[[nodiscard]] LargeArray<Tangent> compute_tangents(const MeshData& data);
+[[nodiscard]] std::vector<Tangent> compute_tangents(const MeshData& data);
 
 }  // namespace glint

@@ -8,7 +8,6 @@
 #include "glint/math/transform.h"
 #include "glint/math/vec2.h"
 #include "glint/sampling/discrete_distribution.h"
-#include "glint/util/large_array.h"
 
 #include <memory>
 #include <optional>
@@ -18,22 +17,21 @@
 namespace glint {
 
 /// The data of a triangle mesh, as loaders produce it. Optional arrays are either empty
-/// or have one entry per vertex. They are LargeArrays: a scan's arrays run to megabytes,
-/// written once, and huge pages save most of their page faults (docs/performance.md).
+/// or have one entry per vertex.
 struct MeshData {
-    LargeArray<Vec3> positions;
+    std::vector<Vec3> positions;
     /// Three vertex indices per triangle, counter-clockwise seen from the front.
-    LargeArray<uint32_t> indices;
-    LargeArray<Vec3> normals;
-    LargeArray<Vec2> uvs;
+    std::vector<uint32_t> indices;
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uvs;
     /// Per-vertex colours (PLY red/green/blue, OBJ "v x y z r g b"), linear: they multiply
     /// the material's base colour at a hit, interpolated with barycentrics.
-    LargeArray<Color> colors;
+    std::vector<Color> colors;
     /// Per-vertex scene material indices, blended with barycentrics at a hit (handout §6.1.1).
-    LargeArray<uint32_t> vertex_materials;
+    std::vector<uint32_t> vertex_materials;
     /// Per-vertex tangent frames for normal maps (geometry/tangent_space.h); a mesh with
     /// normals and texture coordinates computes them when none are given.
-    LargeArray<Tangent> tangents;
+    std::vector<Tangent> tangents;
 };
 
 /// Fill `data.normals` with smooth vertex normals: at each vertex, the sum of the unnormalised

@@ -7,11 +7,11 @@
 
 #include "glint/image/image.h"
 #include "glint/math/color.h"
-#include "glint/util/large_array.h"
 
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace glint {
 
@@ -57,7 +57,7 @@ public:
 
 private:
     uint32_t width_, height_;
-    LargeArray<FilmPixel> pixels_;
+    std::vector<FilmPixel> pixels_;
 };
 
 }  // namespace glint

@@ -2,7 +2,6 @@
 /// \file In-memory float image.
 
 #include "glint/math/color.h"
-#include "glint/util/large_array.h"
 
 #include <cstddef>
 #include <string>
@@ -28,9 +27,7 @@ struct Image {
     int width = 0;
     int height = 0;
     int channels = 0;
-    /// A render's image is megabytes written once: on huge pages, its first writes fault
-    /// once per 2 MiB (a 640×480 film's copy took 11–14 ms in 4 KiB faults, util/large_array.h).
-    LargeArray<float> pixels;
+    std::vector<float> pixels;
     /// One name per channel ("R", "G", "B", "albedo.R", "Z", ...) for the formats that keep
     /// names (EXR); empty for R, G, B (and A).
     std::vector<std::string> channel_names;

@@ -8,8 +8,6 @@
 /// C++20 [intro.object]: their allocation itself begins their lifetime); every element must
 /// be written before it is read.
 
-#include "glint/util/large_array.h"
-
 #include <memory>
 #include <new>
 #include <type_traits>
@@ -44,9 +42,5 @@ struct UninitializedAllocator : Base {
 /// A std::vector whose new elements are left unwritten (see above).
 template <typename T>
 using UninitializedArray = std::vector<T, UninitializedAllocator<T>>;
-
-/// The same over LargeArrayAllocator: from 2 MiB on, in huge pages.
-template <typename T>
-using UninitializedLargeArray = std::vector<T, UninitializedAllocator<T, LargeArrayAllocator<T>>>;
 
 }  // namespace glint

@@ -1,4 +1,4 @@
-#include "glint/util/large_array.h"
+#include "glint/util/huge_page_array.h"
 
 #include <algorithm>
 #include <new>
@@ -11,7 +11,7 @@ namespace glint::detail {
 
 namespace {
 
-/// Large arrays are rounded up to whole huge pages, so that the advice covers the last one.
+/// Arrays are rounded up to whole huge pages, so that the advice covers the last one.
 std::size_t huge_page_bytes(std::size_t bytes) {
     return (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
 }
@@ -23,7 +23,7 @@ std::align_val_t array_alignment(std::size_t bytes, std::size_t alignment) {
 
 }  // namespace
 
-void* allocate_large_array(std::size_t bytes, std::size_t alignment) {
+void* allocate_huge_page_array(std::size_t bytes, std::size_t alignment) {
     if (bytes < kHugePageBytes) return ::operator new(bytes, array_alignment(bytes, alignment));
     const std::size_t rounded = huge_page_bytes(bytes);
     void* p = ::operator new(rounded, array_alignment(bytes, alignment));
@@ -35,7 +35,7 @@ void* allocate_large_array(std::size_t bytes, std::size_t alignment) {
     return p;
 }
 
-void free_large_array(void* p, std::size_t bytes, std::size_t alignment) noexcept {
+void free_huge_page_array(void* p, std::size_t bytes, std::size_t alignment) noexcept {
     ::operator delete(p, array_alignment(bytes, alignment));
 }
 

@@ -1,4 +1,4 @@
-#include "glint/util/large_array.h"
+#include "glint/util/huge_page_array.h"
 
 #include <gtest/gtest.h>
 
@@ -39,8 +39,8 @@ int huge_page_eligible(const void* address) {
     return -1;
 }
 
-TEST(LargeArray, KeepsItsValuesThroughGrowthAcrossTheHugePageSize) {
-    LargeArray<uint32_t> values;
+TEST(HugePageArray, KeepsItsValuesThroughGrowthAcrossTheHugePageSize) {
+    HugePageArray<uint32_t> values;
     const std::size_t count = 3 * kHugePageBytes / sizeof(uint32_t);
     for (std::size_t i = 0; i < count; ++i) values.push_back(uint32_t(i * 2654435761u));
     for (std::size_t i = 0; i < count; i += 4099) ASSERT_EQ(values[i], uint32_t(i * 2654435761u));
@@ -49,16 +49,16 @@ TEST(LargeArray, KeepsItsValuesThroughGrowthAcrossTheHugePageSize) {
     EXPECT_EQ(values[9], uint32_t(9 * 2654435761u));
 }
 
-TEST(LargeArray, SmallArraysAreAlignedForTheirType) {
+TEST(HugePageArray, SmallArraysAreAlignedForTheirType) {
     struct alignas(64) Wide {
         float lanes[16];
     };
-    const LargeArray<Wide> small(3);
+    const HugePageArray<Wide> small(3);
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(small.data()) % 64, 0u);
 }
 
-TEST(LargeArray, ArraysOfHugePagesStartOnOneAndMayUseThem) {
-    const LargeArray<float> large(kHugePageBytes / sizeof(float) + 1);
+TEST(HugePageArray, ArraysOfHugePagesStartOnOneAndMayUseThem) {
+    const HugePageArray<float> large(kHugePageBytes / sizeof(float) + 1);
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(large.data()) % kHugePageBytes, 0u);
     const std::string mode = huge_page_mode();
     if (mode != "madvise" && mode != "always")
