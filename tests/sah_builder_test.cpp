@@ -2,7 +2,9 @@
 // separated clusters part at the root where the heuristic's sum says, along whichever axis
 // separates them and however many empty bins lie between; a box no split can improve
 // stays a leaf, and every primitive is in exactly one leaf; and where every primitive has a
-// bin of its own, the root takes the cheapest of all splits, by the full heuristic.
+// bin of its own, the root takes the cheapest of all splits, by the full heuristic, and so
+// does a child, binned over its own centroids; and every node's box is exactly the union of
+// its primitives' boxes.
 
 #include "glint/accel/sah_builder.h"
 
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <numeric>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace glint {
@@ -91,23 +94,24 @@ TEST(SahBuilder, ABoxNoSplitImprovesStaysOneLeafAndEveryPrimitiveIsInOneLeaf) {
     for (const BvhNode& n : bvh.nodes) EXPECT_LE(n.count, 4u);
 }
 
-TEST(SahBuilder, WhereEveryPrimitiveHasABinTheRootTakesTheCheapestOfAllSplits) {
-    // Eight boxes of random extents whose centres lie 10 apart on every axis (in a random
-    // order per axis), so each falls in a bin of its own and the binned search sees every
-    // split in centroid order. The root must take the split of least
-    // area(left) * |left| + area(right) * |right|, computed here by brute force.
-    constexpr int kBoxes = 8;
-    std::mt19937 rng(2013);
-    std::uniform_real_distribution<float> half_extent(0.5f, 30.0f);
-    int checked = 0;
-    for (int trial = 0; trial < 200; ++trial) {
+/// Eight boxes of random extents whose centres lie 10 apart on every axis (in a random order
+/// per axis), so that each falls in a bin of its own and the binned search sees every split
+/// in centroid order; and, by brute force, the side of the split of least
+/// area(left) * |left| + area(right) * |right|. Empty when the two best splits nearly tie,
+/// so that rounding may pick either.
+struct SplitTrial {
+    static constexpr int kBoxes = 8;
+    std::vector<Bounds3> boxes;
+    std::vector<uint32_t> best_side;
+
+    explicit SplitTrial(std::mt19937& rng) {
+        std::uniform_real_distribution<float> half_extent(0.5f, 30.0f);
         std::vector<int> place[3];
         for (auto& order : place) {
             order.resize(kBoxes);
             std::iota(order.begin(), order.end(), 0);
             std::shuffle(order.begin(), order.end(), rng);
         }
-        std::vector<Bounds3> boxes;
         for (int i = 0; i < kBoxes; ++i) {
             Vec3 center, half;
             for (int a = 0; a < 3; ++a) {
@@ -134,21 +138,98 @@ TEST(SahBuilder, WhereEveryPrimitiveHasABinTheRootTakesTheCheapestOfAllSplits) {
         }
         std::vector<float> sorted = costs;
         std::sort(sorted.begin(), sorted.end());
-        if (sorted[1] < sorted[0] * 1.001f) continue;  // a near tie: rounding may pick either
-        const std::vector<uint32_t>& best = sides[std::min_element(costs.begin(), costs.end()) - costs.begin()];
-        BvhBuildConfig config;
-        config.max_leaf_size = 4;  // so that the root must split
-        const BinaryBvh bvh = build_binary_bvh(boxes, config);
-        ASSERT_FALSE(bvh.nodes[0].is_leaf());
+        if (sorted[1] >= sorted[0] * 1.001f)
+            best_side = sides[std::min_element(costs.begin(), costs.end()) - costs.begin()];
+    }
+
+    /// Whether inner node `node` of `bvh` splits the trial's boxes into best_side and the rest.
+    [[nodiscard]] bool split_is_best(const BinaryBvh& bvh, uint32_t node) const {
         std::vector<uint32_t> ids[2];
         for (uint32_t c = 0; c < 2; ++c) {
-            leaves_below(bvh, bvh.nodes[0].index + c, ids[c]);
+            leaves_below(bvh, bvh.nodes[node].index + c, ids[c]);
             std::sort(ids[c].begin(), ids[c].end());
         }
-        EXPECT_TRUE(ids[0] == best || ids[1] == best) << "trial " << trial;
+        return ids[0] == best_side || ids[1] == best_side;
+    }
+};
+
+TEST(SahBuilder, WhereEveryPrimitiveHasABinTheRootTakesTheCheapestOfAllSplits) {
+    std::mt19937 rng(2013);
+    int checked = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        const SplitTrial t(rng);
+        if (t.best_side.empty()) continue;
+        BvhBuildConfig config;
+        config.max_leaf_size = 4;  // so that the root must split
+        const BinaryBvh bvh = build_binary_bvh(t.boxes, config);
+        ASSERT_FALSE(bvh.nodes[0].is_leaf());
+        EXPECT_TRUE(t.split_is_best(bvh, 0)) << "trial " << trial;
         ++checked;
     }
     EXPECT_GT(checked, 150);
+}
+
+TEST(SahBuilder, AChildBinsItsOwnCentroidsAndTakesTheCheapestOfItsSplits) {
+    // The trial's eight boxes next to eight small ones 100,000 away: the root parts the two
+    // clusters, and the near child, binned over its own centroids (not its parent's, which
+    // would put all eight in one bin), again sees every split and must take the cheapest.
+    std::mt19937 rng(1987);
+    int checked = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        SplitTrial t(rng);
+        if (t.best_side.empty()) continue;
+        for (int i = 0; i < SplitTrial::kBoxes; ++i) {
+            const Vec3 center(1e5f + 10.0f * float(i));
+            t.boxes.emplace_back(center - Vec3(1.0f), center + Vec3(1.0f));
+        }
+        BvhBuildConfig config;
+        config.max_leaf_size = 4;
+        const BinaryBvh bvh = build_binary_bvh(t.boxes, config);
+        ASSERT_FALSE(bvh.nodes[0].is_leaf());
+        std::vector<uint32_t> first;
+        leaves_below(bvh, bvh.nodes[0].index, first);
+        const uint32_t near = bvh.nodes[0].index + (*std::min_element(first.begin(), first.end()) < 8 ? 0 : 1);
+        ASSERT_FALSE(bvh.nodes[near].is_leaf()) << "trial " << trial;
+        EXPECT_TRUE(t.split_is_best(bvh, near)) << "trial " << trial;
+        ++checked;
+    }
+    EXPECT_GT(checked, 150);
+}
+
+/// The union of the boxes of the primitives below `node`, checked against each node's own
+/// box on the way.
+Bounds3 check_boxes_below(const BinaryBvh& bvh, std::span<const Bounds3> boxes, uint32_t node, int& wrong) {
+    const BvhNode& n = bvh.nodes[node];
+    Bounds3 below;
+    if (n.is_leaf()) {
+        for (uint32_t i = n.index; i < n.index + n.count; ++i) below.extend(boxes[bvh.order[i]]);
+    } else {
+        below = check_boxes_below(bvh, boxes, n.index, wrong);
+        below.extend(check_boxes_below(bvh, boxes, n.index + 1, wrong));
+    }
+    for (int a = 0; a < 3; ++a) wrong += n.bounds.lo[a] != below.lo[a] || n.bounds.hi[a] != below.hi[a];
+    return below;
+}
+
+TEST(SahBuilder, EveryNodeBoxIsExactlyTheUnionOfItsPrimitivesBoxes) {
+    // Enough random boxes that the top levels bin in parallel and split in parallel tasks,
+    // and a hundred that share one centroid, which only median splits divide: node
+    // boxes come from the bins there, from scans of the halves here, and must be tight.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> coordinate(-100.0f, 100.0f), extent(0.0f, 3.0f);
+    std::vector<Bounds3> boxes;
+    for (int i = 0; i < 50000; ++i) {
+        const Vec3 lo(coordinate(rng), coordinate(rng), coordinate(rng));
+        boxes.emplace_back(lo, lo + Vec3(extent(rng), extent(rng), extent(rng)));
+    }
+    for (int i = 0; i < 100; ++i) {
+        const Vec3 half(extent(rng), extent(rng), extent(rng));
+        boxes.emplace_back(Vec3(500.0f) - half, Vec3(500.0f) + half);
+    }
+    const BinaryBvh bvh = build_binary_bvh(boxes, BvhBuildConfig{});
+    int wrong = 0;
+    check_boxes_below(bvh, boxes, 0, wrong);
+    EXPECT_EQ(wrong, 0);
 }
 
 }  // namespace
