@@ -4,13 +4,14 @@
 // stays a leaf, and every primitive is in exactly one leaf; and where every primitive has a
 // bin of its own, the root takes the cheapest of all splits, by the full heuristic, and so
 // does a child, binned over its own centroids; and every node's box is exactly the union of
-// its primitives' boxes.
+// its primitives' boxes; boxes computed on demand give the same tree, without the empty ones.
 
 #include "glint/accel/sah_builder.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <random>
 #include <span>
@@ -230,6 +231,48 @@ TEST(SahBuilder, EveryNodeBoxIsExactlyTheUnionOfItsPrimitivesBoxes) {
     int wrong = 0;
     check_boxes_below(bvh, boxes, 0, wrong);
     EXPECT_EQ(wrong, 0);
+}
+
+/// Whether the subtrees below node `a` of `x` and node `b` of `y` are the same: the same
+/// boxes, splits and leaf entries (node numbers depend on which task claimed them first).
+bool same_tree(const BinaryBvh& x, uint32_t a, const BinaryBvh& y, uint32_t b) {
+    const BvhNode &m = x.nodes[a], &n = y.nodes[b];
+    if (m.bounds.lo != n.bounds.lo || m.bounds.hi != n.bounds.hi || m.count != n.count) return false;
+    if (m.is_leaf())
+        return std::equal(x.order.begin() + m.index, x.order.begin() + m.index + m.count, y.order.begin() + n.index);
+    return same_tree(x, m.index, y, n.index) && same_tree(x, m.index + 1, y, n.index + 1);
+}
+
+TEST(SahBuilder, BoxesComputedOnDemandGiveTheSameTreeAndEmptyOnesAreLeftOut) {
+    // Several thousand boxes, every seventh empty (nothing can hit it), asked for by range
+    // from several threads: the tree is the one the array of boxes gives, and its leaves
+    // hold every other box exactly once.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
+    std::vector<Bounds3> boxes(5000);
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        if (i % 7 == 3) continue;  // Bounds3{} is empty
+        const Vec3 lo(coordinate(rng), coordinate(rng), coordinate(rng));
+        boxes[i] = Bounds3(lo, lo + Vec3(0.5f));
+    }
+    std::atomic<uint32_t> asked{0};
+    const BinaryBvh on_demand = build_binary_bvh(
+        uint32_t(boxes.size()),
+        [&](uint32_t first, std::span<Bounds3> out) {
+            asked += uint32_t(out.size());
+            std::copy_n(boxes.begin() + first, out.size(), out.begin());
+        },
+        BvhBuildConfig{});
+    EXPECT_EQ(asked.load(), boxes.size());
+    const BinaryBvh from_array = build_binary_bvh(boxes, BvhBuildConfig{});
+    EXPECT_TRUE(same_tree(on_demand, 0, from_array, 0));
+    std::vector<uint32_t> ids;
+    leaves_below(on_demand, 0, ids);
+    std::sort(ids.begin(), ids.end());
+    std::vector<uint32_t> expected;
+    for (uint32_t i = 0; i < boxes.size(); ++i)
+        if (i % 7 != 3) expected.push_back(i);
+    EXPECT_EQ(ids, expected);
 }
 
 }  // namespace

@@ -85,6 +85,8 @@ private:
 /// addition down many times over).
 struct PrimRef {
     Box4 box;
+    /// Unwritten, for arrays filled right after (UninitializedArray).
+    PrimRef() = default;
     PrimRef(const Bounds3& b, uint32_t id) : box() {
         for (int a = 0; a < 3; ++a) {
             box.lo[a] = b.lo[a];

@@ -26,7 +26,7 @@ constexpr uint32_t kParallelTask = 1u << 11;
 
 class Builder {
 public:
-    Builder(std::vector<PrimRef>& refs, const BvhBuildConfig& config, UninitializedArray<BvhNode>& nodes)
+    Builder(UninitializedArray<PrimRef>& refs, const BvhBuildConfig& config, UninitializedArray<BvhNode>& nodes)
         : refs_(refs), config_(config), nodes_(nodes) {}
 
     /// Builds the tree over all `count` references into node 0.
@@ -201,7 +201,7 @@ private:
         return mid;
     }
 
-    std::vector<PrimRef>& refs_;
+    UninitializedArray<PrimRef>& refs_;
     const BvhBuildConfig& config_;
     UninitializedArray<BvhNode>& nodes_;
     std::atomic<uint32_t> node_count_{1};
@@ -209,15 +209,49 @@ private:
 
 }  // namespace
 
+namespace {
+
+/// The references to all primitives whose bounds are not empty, in index order. Filled in
+/// parallel straight from `bounds`, without an array of every primitive's box.
+UninitializedArray<PrimRef> primitive_refs(uint32_t count, const PrimitiveBounds& bounds) {
+    constexpr uint32_t kChunk = 1024;
+    UninitializedArray<PrimRef> refs(count);
+    std::atomic<bool> some_empty{false};
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, kChunk), [&](const tbb::blocked_range<uint32_t>& r) {
+        Bounds3 boxes[kChunk];
+        for (uint32_t first = r.begin(); first < r.end(); first += kChunk) {
+            const uint32_t n = std::min(kChunk, r.end() - first);
+            bounds(first, std::span(boxes, n));
+            for (uint32_t i = 0; i < n; ++i) {
+                if (boxes[i].empty()) some_empty.store(true, std::memory_order_relaxed);
+                refs[first + i] = PrimRef(boxes[i], first + i);
+            }
+        }
+    });
+    // Empty boxes (NaN vertices) are rare: removed in one ordered pass when there are any.
+    if (some_empty.load())
+        refs.erase(std::remove_if(refs.begin(), refs.end(), [](const PrimRef& r) { return r.box.bounds().empty(); }),
+                   refs.end());
+    return refs;
+}
+
+}  // namespace
+
 BinaryBvh build_binary_bvh(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config) {
+    return build_binary_bvh(
+        static_cast<uint32_t>(primitive_bounds.size()),
+        [&](uint32_t first, std::span<Bounds3> out) {
+            std::copy_n(primitive_bounds.begin() + first, out.size(), out.begin());
+        },
+        config);
+}
+
+BinaryBvh build_binary_bvh(uint32_t count, const PrimitiveBounds& bounds, const BvhBuildConfig& config) {
     if (config.bin_count < 2 || config.bin_count > kMaxBins)
         throw std::invalid_argument("BvhBuildConfig::bin_count must be in [2, 64]");
     if (config.max_leaf_size == 0) throw std::invalid_argument("BvhBuildConfig::max_leaf_size must be positive");
     BinaryBvh bvh;
-    std::vector<PrimRef> refs;
-    refs.reserve(primitive_bounds.size());
-    for (uint32_t i = 0; i < primitive_bounds.size(); ++i)
-        if (!primitive_bounds[i].empty()) refs.emplace_back(primitive_bounds[i], i);
+    UninitializedArray<PrimRef> refs = primitive_refs(count, bounds);
     if (refs.empty()) return bvh;
     const auto n = static_cast<uint32_t>(refs.size());
     // A binary tree with n leaves at most has 2n - 1 nodes; children are claimed in pairs.

@@ -7,20 +7,20 @@
 namespace glint {
 
 void TriangleBvh::build(std::span<const Vec3> positions, std::span<const uint32_t> indices) {
-    const size_t count = indices.size() / 3;
-    std::vector<Bounds3> boxes(count);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1u << 14), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t t = r.begin(); t < r.end(); ++t) {
+    const auto count = static_cast<uint32_t>(indices.size() / 3);
+    // The builder asks for the triangles' boxes as it fills its references.
+    auto boxes = [&](uint32_t first, std::span<Bounds3> out) {
+        for (size_t i = 0; i < out.size(); ++i) {
             Bounds3 b;
-            for (int k = 0; k < 3; ++k) b.extend(positions[indices[3 * t + k]]);
-            boxes[t] = b;
+            for (int k = 0; k < 3; ++k) b.extend(positions[indices[3 * (first + i) + k]]);
+            out[i] = b;
         }
-    });
+    };
     // At most four triangles per leaf: one block, so leaf k's triangles become block k.
     BvhBuildConfig config;
     config.max_leaf_size = TriangleBlock::kWidth;
     config.leaf_block_log2 = 2;
-    wide_.build(boxes, config);
+    wide_.build(count, boxes, config);
     const std::span<const WideLeaf> leaves = wide_.leaves();
     const std::span<const uint32_t> order = wide_.primitive_order();
     // Left unwritten: the loop below writes every lane of every block, on every thread.

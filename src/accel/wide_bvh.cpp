@@ -56,7 +56,7 @@ private:
     /// parent leaves at least one of its eight to the other subtree): split[j] slots for its
     /// first child and the rest for the second, or 0 to keep it in one slot. own_split is
     /// the first child's share of the eight slots when the node is a wide node of its own.
-    /// A leaf's plan stays zero: one slot, cost 0 (leaves are the same in any collapse).
+    /// A leaf's plan is zero: one slot, cost 0 (leaves are the same in any collapse).
     struct Plan {
         float cost[WideNode::kWidth - 1] = {};
         uint8_t split[WideNode::kWidth - 1] = {};
@@ -76,7 +76,10 @@ private:
     /// children before parents.
     void plan_subtree(uint32_t k, int depth) {
         const BvhNode& node = binary_.nodes[k];
-        if (node.is_leaf()) return;
+        if (node.is_leaf()) {
+            plan_[k] = Plan{};
+            return;
+        }
         if (parallel_ && depth < kParallelPlanDepth) {
             tbb::parallel_invoke([&] { plan_subtree(node.index, depth + 1); },
                                  [&] { plan_subtree(node.index + 1, depth + 1); });
@@ -246,18 +249,29 @@ private:
     WideNodeArray& nodes_;
     std::vector<WideLeaf>& leaves_;
     const bool parallel_;
-    std::vector<Plan> plan_;   // per binary node
-    std::vector<Size> sizes_;  // per binary node that becomes a wide node
+    // Left unwritten (UninitializedArray) until the passes write them, on every thread: zeroed,
+    // they were a serial pass and 6 MB of page faults on one thread for the dragon.
+    UninitializedArray<Plan> plan_;   // per binary node
+    UninitializedArray<Size> sizes_;  // per binary node that becomes a wide node
 };
 
 }  // namespace
 
 void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config) {
+    build(
+        static_cast<uint32_t>(primitive_bounds.size()),
+        [&](uint32_t first, std::span<Bounds3> out) {
+            std::copy_n(primitive_bounds.begin() + first, out.size(), out.begin());
+        },
+        config);
+}
+
+void WideBvh::build(uint32_t count, const PrimitiveBounds& bounds, const BvhBuildConfig& config) {
     nodes_.clear();
     leaves_.clear();
     order_.clear();
     bounds_ = Bounds3{};
-    BinaryBvh binary = build_binary_bvh(primitive_bounds, config);
+    BinaryBvh binary = build_binary_bvh(count, bounds, config);
     if (binary.nodes.empty()) return;
     bounds_ = binary.nodes[0].bounds;
     Collapser(binary, nodes_, leaves_).collapse();

@@ -8,6 +8,7 @@
 #include "glint/util/uninitialized_allocator.h"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 
 namespace glint {
@@ -54,5 +55,13 @@ inline constexpr int kMaxBinaryBvhDepth = kMaxSahDepth + 32;
 /// runs in the caller's task arena, so the arena decides the thread count). Primitives with
 /// empty bounds are left out: they can never be hit. Degenerate (flat, point) bounds are fine.
 [[nodiscard]] BinaryBvh build_binary_bvh(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config);
+
+/// Writes the boxes of primitives first, first + 1, ... into `out` (as many as it holds).
+/// Called from several threads at once, on disjoint ranges.
+using PrimitiveBounds = std::function<void(uint32_t first, std::span<Bounds3> out)>;
+
+/// The same build over `count` primitives whose boxes `bounds` computes on demand: a large
+/// mesh needs no array of every triangle's box, which cost a pass and its page faults.
+[[nodiscard]] BinaryBvh build_binary_bvh(uint32_t count, const PrimitiveBounds& bounds, const BvhBuildConfig& config);
 
 }  // namespace glint

@@ -79,6 +79,8 @@ class WideBvh {
 public:
     /// Builds the binary tree with `config` (in the caller's TBB arena) and collapses it.
     void build(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config = {});
+    /// The same over `count` primitives whose boxes `bounds` computes on demand.
+    void build(uint32_t count, const PrimitiveBounds& bounds, const BvhBuildConfig& config = {});
 
     /// Visit leaves; `intersect_leaf(uint32_t leaf, Ray& ray) -> bool` tests a leaf's
     /// primitives, shrinks ray.tmax on a closer hit and returns true on a hit. Closest-hit
