@@ -20,8 +20,10 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <random>
 
 #include <tbb/task_arena.h>
@@ -337,6 +339,45 @@ TEST(ShapeAgnostic, ClosestHitTraversalVisitsChildrenFrontToBackInEveryOctant) {
         }));
         EXPECT_EQ(visited, (std::vector<uint32_t>{7, 6, 5, 4, 3, 2, 1, 0})) << "octant " << octant;
     }
+}
+
+/// A box of NaN (a hostile mesh's triangle) in a node with seven others, in random places:
+/// it is never hit, and in no octant's child order may it take the place of a box that can
+/// be (its key in the order is NaN, which compares with nothing).
+TEST(ShapeAgnostic, ANaNBoxHidesNoNeighbourFromTraversal) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::mt19937 rng(3);
+    int missed = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        // Eight cells of a 4 x 4 x 4 grid, one box in each, the NaN box first or last.
+        std::vector<int> cells(64);
+        std::iota(cells.begin(), cells.end(), 0);
+        std::shuffle(cells.begin(), cells.end(), rng);
+        std::vector<Bounds3> boxes;
+        for (int k = 0; k < 8; ++k) {
+            const Vec3 lo(3.0f * float(cells[k] % 4), 3.0f * float(cells[k] / 4 % 4), 3.0f * float(cells[k] / 16));
+            boxes.emplace_back(lo, lo + Vec3(1.0f));
+        }
+        const uint32_t nan_box = trial % 2 ? 7 : 0;
+        boxes[nan_box] = Bounds3(Vec3(nan), Vec3(nan));
+        WideBvh wide;
+        wide.build(boxes, BvhBuildConfig{.max_leaf_size = 1});
+        ASSERT_EQ(wide.nodes().size(), 1u);
+        for (uint32_t octant = 0; octant < 8; ++octant)
+            for (uint32_t k = 0; k < 8; ++k) {
+                if (k == nan_box) continue;
+                const Vec3 d =
+                    normalize(Vec3(octant & 1 ? -1.0f : 1.0f, octant & 2 ? -1.0f : 1.0f, octant & 4 ? -1.0f : 1.0f));
+                Ray ray(boxes[k].center() - d * 0.1f, d, 0.0f, 0.2f);  // inside box k only
+                bool found = false;
+                wide.traverse<false>(ray, [&](uint32_t leaf, Ray&) {
+                    found |= wide.primitive_order()[wide.leaves()[leaf].first] == k;
+                    return false;
+                });
+                missed += !found;
+            }
+    }
+    EXPECT_EQ(missed, 0);
 }
 
 /// Two hit children are taken by where the ray enters them: here the large box, whose centre

@@ -224,24 +224,27 @@ private:
     /// their centres lie (a ray heading that way meets them in about that order), then the
     /// unused ones.
     void set_child_order(WideNode& node, const uint32_t* slots, uint32_t used) const {
+        Vec3 centre[WideNode::kWidth];
+        for (uint32_t i = 0; i < used; ++i) centre[i] = binary_.nodes[slots[i]].bounds.center();
         std::fill(std::begin(node.order), std::end(node.order), 0u);
         for (uint32_t octant = 0; octant < 8; ++octant) {
             float key[WideNode::kWidth];
-            uint32_t sorted[WideNode::kWidth];
             for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
-                sorted[i] = i;
                 key[i] = std::numeric_limits<float>::infinity();
                 if (i >= used) continue;
-                const Vec3 centre = binary_.nodes[slots[i]].bounds.center();
-                key[i] = 0.0f;
-                for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre[a] : centre[a];
+                float k = 0.0f;
+                for (int a = 0; a < 3; ++a) k += (octant >> a & 1) ? -centre[i][a] : centre[i][a];
+                key[i] = k == k ? k : std::numeric_limits<float>::infinity();  // NaN (a hostile mesh's box) last
             }
-            // Insertion sort, stable: std::stable_sort took a heap buffer for each of the
-            // eight sorts of every node, a fifth of the collapse's time.
-            for (uint32_t i = 1; i < WideNode::kWidth; ++i)
-                for (uint32_t k = i; k > 0 && key[sorted[k]] < key[sorted[k - 1]]; --k)
-                    std::swap(sorted[k], sorted[k - 1]);
-            for (uint32_t k = 0; k < WideNode::kWidth; ++k) node.order[k] |= sorted[k] << (3 * octant);
+            // A stable sort as ranks: slot i comes after every slot of smaller key and every
+            // earlier slot of equal key. Branch-free: the insertion sort before it compared
+            // keys no predictor could guess and was half of the collapse's time.
+            for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
+                uint32_t rank = 0;
+                for (uint32_t j = 0; j < WideNode::kWidth; ++j)
+                    rank += uint32_t(key[j] < key[i]) | (uint32_t(key[j] == key[i]) & uint32_t(j < i));
+                node.order[rank] |= i << (3 * octant);
+            }
         }
     }
 
