@@ -112,6 +112,44 @@ private:
         return float((n + (1u << s) - 1) >> s);
     }
 
+    /// The cheapest split the bins offer: after which bin, along which axis (-1 when the
+    /// centroids share one bin on every axis), at what SAH cost (both sides' area times
+    /// their leaf blocks).
+    struct SplitChoice {
+        float cost = kInfinity;
+        int axis = -1;
+        uint32_t last_left_bin = 0;
+    };
+    [[nodiscard]] SplitChoice cheapest_split(const Bins& bins) const {
+        SplitChoice best;
+        for (int a = 0; a < 3; ++a) {
+            // Only the bins that hold primitives: a split after an empty bin has both
+            // sides of the split before it, so it costs the same and is never better.
+            uint32_t used[kMaxBins];
+            uint32_t n_used = 0;
+            for (uint64_t m = bins.nonempty(a); m != 0; m &= m - 1) used[n_used++] = uint32_t(std::countr_zero(m));
+            if (n_used < 2) continue;  // all centroids in one bin: no split along this axis
+            // Sweep from the right for every right side's cost, then from the left.
+            float right_cost[kMaxBins];
+            Box4 acc = Box4::empty();
+            uint32_t acc_count = 0;
+            for (uint32_t u = n_used - 1; u > 0; --u) {
+                acc.extend(bins.bounds[a][used[u]]);
+                acc_count += bins.count[a][used[u]];
+                right_cost[u] = acc.half_area() * blocks(acc_count);
+            }
+            acc = Box4::empty();
+            acc_count = 0;
+            for (uint32_t u = 0; u + 1 < n_used; ++u) {
+                acc.extend(bins.bounds[a][used[u]]);
+                acc_count += bins.count[a][used[u]];
+                const float cost = acc.half_area() * blocks(acc_count) + right_cost[u + 1];
+                if (cost < best.cost) best = {cost, a, used[u]};
+            }
+        }
+        return best;
+    }
+
     /// Chooses a split and partitions [begin, end) into `out`. Returns false for a leaf.
     bool find_split(uint32_t begin, uint32_t end, const RangeBounds& rb, int depth, Children& out) {
         const uint32_t count = end - begin;
@@ -120,41 +158,12 @@ private:
             const BinMapping map(rb.centroids.bounds(), config_.bin_count);
             Bins bins(map.bins);
             fill_bins(begin, end, map, bins);
-            float best_cost = kInfinity;
-            int best_axis = -1;
-            uint32_t best_bin = 0;
-            for (int a = 0; a < 3; ++a) {
-                // Only the bins that hold primitives: a split after an empty bin has both
-                // sides of the split before it, so it costs the same and is never better.
-                uint32_t used[kMaxBins];
-                uint32_t n_used = 0;
-                for (uint64_t m = bins.nonempty(a); m != 0; m &= m - 1) used[n_used++] = uint32_t(std::countr_zero(m));
-                if (n_used < 2) continue;  // all centroids in one bin: no split along this axis
-                // Sweep from the right for every right side's cost, then from the left.
-                float right_cost[kMaxBins];
-                Box4 acc = Box4::empty();
-                uint32_t acc_count = 0;
-                for (uint32_t u = n_used - 1; u > 0; --u) {
-                    acc.extend(bins.bounds[a][used[u]]);
-                    acc_count += bins.count[a][used[u]];
-                    right_cost[u] = acc.half_area() * blocks(acc_count);
-                }
-                acc = Box4::empty();
-                acc_count = 0;
-                for (uint32_t u = 0; u + 1 < n_used; ++u) {
-                    acc.extend(bins.bounds[a][used[u]]);
-                    acc_count += bins.count[a][used[u]];
-                    const float cost = acc.half_area() * blocks(acc_count) + right_cost[u + 1];
-                    if (cost < best_cost) {
-                        best_cost = cost;
-                        best_axis = a;
-                        best_bin = used[u];
-                    }
-                }
-            }
-            if (best_axis >= 0) {
+            const SplitChoice best = cheapest_split(bins);
+            if (best.axis >= 0) {
+                const int best_axis = best.axis;
+                const uint32_t best_bin = best.last_left_bin;
                 const float area = rb.bounds.bounds().half_area();
-                const float split_cost = config_.traversal_cost * area + best_cost;
+                const float split_cost = config_.traversal_cost * area + best.cost;
                 if (!must_split && split_cost >= area * blocks(count)) return false;
                 out.left.bounds = Box4::empty();
                 out.right.bounds = Box4::empty();
