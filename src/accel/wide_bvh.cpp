@@ -3,7 +3,12 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 namespace glint {
@@ -25,6 +30,27 @@ void for_each_index(bool parallel, uint32_t count, const Body& body) {
         tbb::parallel_for(0u, count, [&](uint32_t i) { body(i); });
     else
         for (uint32_t i = 0; i < count; ++i) body(i);
+}
+
+/// Where key i of eight comes in their stable ascending order: after every smaller key and
+/// every equal one before it. The eight ranks of eight keys are a sort without branches:
+/// the insertion sort before it compared keys no predictor could guess and was half of
+/// the collapse's time; counted with one comparison of all eight at once, as here, the
+/// ranks cost a quarter of what they did one pair at a time.
+inline uint32_t stable_rank(const float* key, uint32_t i) {
+    const uint32_t before = (1u << i) - 1;  // bit j for each j < i
+#if defined(__SSE2__)
+    const __m128 low = _mm_loadu_ps(key), high = _mm_loadu_ps(key + 4), k = _mm_set1_ps(key[i]);
+    const auto less = uint32_t(_mm_movemask_ps(_mm_cmplt_ps(low, k)) | _mm_movemask_ps(_mm_cmplt_ps(high, k)) << 4);
+    const auto equal = uint32_t(_mm_movemask_ps(_mm_cmpeq_ps(low, k)) | _mm_movemask_ps(_mm_cmpeq_ps(high, k)) << 4);
+#else
+    uint32_t less = 0, equal = 0;
+    for (uint32_t j = 0; j < 8; ++j) {
+        less |= uint32_t(key[j] < key[i]) << j;
+        equal |= uint32_t(key[j] == key[i]) << j;
+    }
+#endif
+    return uint32_t(std::popcount(less | (equal & before)));
 }
 
 /// Turns binary nodes into wide ones: the plan, then the size of each wide subtree, then
@@ -236,15 +262,7 @@ private:
                 for (int a = 0; a < 3; ++a) k += (octant >> a & 1) ? -centre[i][a] : centre[i][a];
                 key[i] = k == k ? k : std::numeric_limits<float>::infinity();  // NaN (a hostile mesh's box) last
             }
-            // A stable sort as ranks: slot i comes after every slot of smaller key and every
-            // earlier slot of equal key. Branch-free: the insertion sort before it compared
-            // keys no predictor could guess and was half of the collapse's time.
-            for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
-                uint32_t rank = 0;
-                for (uint32_t j = 0; j < WideNode::kWidth; ++j)
-                    rank += uint32_t(key[j] < key[i]) | (uint32_t(key[j] == key[i]) & uint32_t(j < i));
-                node.order[rank] |= i << (3 * octant);
-            }
+            for (uint32_t i = 0; i < WideNode::kWidth; ++i) node.order[stable_rank(key, i)] |= i << (3 * octant);
         }
     }
 
