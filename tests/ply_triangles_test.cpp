@@ -97,6 +97,7 @@ struct PlyVariant {
     std::string extra_header{};           ///< lines added after the format line
     std::string extra_vertex_property{};  ///< one more float property per vertex
     int face_length = 3;                ///< the first face's index count (its extra indices repeat)
+    int first_count = 0;                ///< replaces the first face's count (not its indices) when nonzero
     uint32_t first_index = 0;           ///< replaces the first face's first index when nonzero
     float first_x = 0.0f;               ///< replaces the first vertex's x when nonzero
     std::string tail{};                 ///< bytes after the faces
@@ -148,10 +149,11 @@ fs::path write_variant(const fs::path& dir, const std::string& name, const PlyVa
     }
     for (std::size_t f = 0; f < mesh.indices.size() / 3; ++f) {
         const int length = f == 0 ? variant.face_length : 3;
+        const int count = f == 0 && variant.first_count != 0 ? variant.first_count : length;
         if (variant.count_type == "uchar" || variant.count_type == "uint8")
-            put(text, uint8_t(length), variant.big_endian);
+            put(text, uint8_t(count), variant.big_endian);
         else
-            put(text, uint32_t(length), variant.big_endian);
+            put(text, uint32_t(count), variant.big_endian);
         for (int k = 0; k < length; ++k) {
             uint32_t index = mesh.indices[3 * f + std::min(k, 2)];
             if (f == 0 && k == 0 && variant.first_index != 0) index = variant.first_index;
@@ -198,11 +200,15 @@ TEST(PlyTriangles, LeavesEveryOtherFileToAssimp) {
     expect_left_to_assimp(glint_test::kTestDataDir / "vertex_colored_triangle.ply");  // ASCII
     expect_left_to_assimp(write_variant(dir, "quad", {.face_length = 4}));
     expect_left_to_assimp(write_variant(dir, "point", {.face_length = 1}));
+    // A count that is not 3 in a file whose size still fits faces of three.
+    expect_left_to_assimp(write_variant(dir, "miscounted", {.first_count = 4}));
+    expect_left_to_assimp(write_variant(dir, "miscounted_big", {.big_endian = true, .first_count = 2}));
     expect_left_to_assimp(write_variant(dir, "colour", {.extra_vertex_property = "red"}));
     expect_left_to_assimp(write_variant(dir, "half_normal", {.extra_vertex_property = "nx"}));
     expect_left_to_assimp(write_variant(dir, "short_indices", {.index_type = "short"}));
     expect_left_to_assimp(write_variant(dir, "other_list", {.list_name = "indices"}));
     expect_left_to_assimp(write_variant(dir, "past_the_vertices", {.first_index = 1000}));
+    expect_left_to_assimp(write_variant(dir, "negative_index", {.first_index = 0xffffffffu}));  // -1 as an int
     expect_left_to_assimp(write_variant(dir, "not_finite", {.first_x = std::numeric_limits<float>::infinity()}));
     expect_left_to_assimp(write_variant(dir, "longer", {.tail = "\n"}));
     expect_left_to_assimp(write_variant(dir, "material", {.extra_header = "element material 0\n"}));

@@ -245,6 +245,14 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     for (int k = 0; k < (has_normals ? 6 : 3); ++k) read[k] = scalar_reader(type[k], header->big_endian);
     const ScalarReader read_count = scalar_reader(*list.list_count, header->big_endian);
     const ScalarReader read_index = scalar_reader(list.type, header->big_endian);
+    // The common layout, little-endian float coordinates and faces of a one-byte count and
+    // four-byte indices, is read in place; the readers' indirect call for every scalar was
+    // most of the parse. Both ways give the same values.
+    const int vertex_scalars = has_normals ? 6 : 3;
+    const bool float_vertices = !header->big_endian && std::all_of(type, type + vertex_scalars,
+                                                                   [](PlyScalar t) { return t == PlyScalar::Float32; });
+    const bool plain_faces = !header->big_endian && count_size == 1 && index_size == 4;
+    const bool signed_indices = list.type == PlyScalar::Int32;
     MeshData data;
     const auto vertex_count = static_cast<uint32_t>(vertices.count);
     data.positions.resize(vertex_count);
@@ -252,7 +260,12 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     RecordReader records(in);
     const bool vertices_read = records.for_each(vertex_count, record, [&](std::size_t v, const char* p) {
         float value[6];
-        for (int k = 0; k < (has_normals ? 6 : 3); ++k) value[k] = float(read[k](p + offset[k]));
+        for (int k = 0; k < vertex_scalars; ++k) {
+            if (float_vertices)
+                std::memcpy(&value[k], p + offset[k], sizeof(float));
+            else
+                value[k] = float(read[k](p + offset[k]));
+        }
         data.positions[v] = Vec3(value[0], value[1], value[2]);
         if (!is_finite(data.positions[v])) return false;
         if (has_normals) {
@@ -265,6 +278,17 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     if (!vertices_read) return std::nullopt;
     data.indices.resize(3 * faces.count);
     const bool faces_read = records.for_each(faces.count, face_record, [&](std::size_t f, const char* p) {
+        if (plain_faces) {
+            if (p[0] != 3) return false;
+            uint32_t index[3];
+            std::memcpy(index, p + 1, sizeof index);
+            for (std::size_t k = 0; k < 3; ++k) {
+                // A negative int32 is at least 2^31 as a uint32, and may still be in range.
+                if ((signed_indices && int32_t(index[k]) < 0) || index[k] >= vertex_count) return false;
+                data.indices[3 * f + k] = index[k];
+            }
+            return true;
+        }
         if (read_count(p) != 3.0) return false;
         for (std::size_t k = 0; k < 3; ++k) {
             const double index = read_index(p + count_size + k * index_size);
