@@ -25,10 +25,12 @@ namespace {
 constexpr std::size_t kStripeBytes = std::size_t(128) << 10;
 /// Deflate's window (RFC 1951 §2): how far back a stripe's first bytes may refer.
 constexpr std::size_t kWindowBytes = std::size_t(32) << 10;
-/// zlib level 5 rather than 6 and one filter (Paeth) rather than libpng's adaptive choice
-/// among five per row: on renders the files come out within 2 % of the default's size and
-/// are written sooner (docs/performance.md, "Against POV-Ray").
-constexpr int kLevel = 5;
+/// zlib level 4 and one filter (Paeth) rather than libpng's level 6 and adaptive choice
+/// among five filters per row. At 640×480 level 4 wrote two spheres in 7.1 ms and the
+/// dragon in 6.4, where level 5 took 9.1 and 8.0, for files 3 to 4 % larger (93,496 and
+/// 144,169 bytes); levels 1 to 3 saved up to 2 ms more but made the files 5 to 27 % larger
+/// than level 5 (docs/performance.md, "Build, load and write").
+constexpr int kLevel = 4;
 constexpr unsigned char kPaeth = 4;
 
 /// The Paeth predictor (PNG specification, ISO/IEC 15948 §9.4): of left, above and upper
