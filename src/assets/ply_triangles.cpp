@@ -246,8 +246,9 @@ std::optional<MeshFile> read_plain_ply(const std::filesystem::path& path, ReadMo
     const ScalarReader read_count = scalar_reader(*list.list_count, header->big_endian);
     const ScalarReader read_index = scalar_reader(list.type, header->big_endian);
     // The common layout, little-endian float coordinates and faces of a one-byte count and
-    // four-byte indices, is read in place; the readers' indirect call for every scalar was
-    // most of the parse. Both ways give the same values.
+    // four-byte indices, is read in place, without the readers' indirect call for every
+    // scalar (the 1x1 dragon: 0.9 ms less, docs/performance.md). Both ways give the same
+    // values.
     const int vertex_scalars = has_normals ? 6 : 3;
     const bool float_vertices = !header->big_endian && std::all_of(type, type + vertex_scalars,
                                                                    [](PlyScalar t) { return t == PlyScalar::Float32; });
