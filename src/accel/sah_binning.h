@@ -208,6 +208,10 @@ struct BinMapping {
     [[nodiscard]] std::array<uint32_t, 4> bins_of(const PrimRef& r) const {
         alignas(16) float centroid[4];
         r.centroid(centroid);
+        return bins_of_centroid(centroid);
+    }
+    /// The same for a centroid already computed (PrimRef::centroid, 16-byte aligned).
+    [[nodiscard]] std::array<uint32_t, 4> bins_of_centroid(const float* centroid) const {
         alignas(16) std::array<uint32_t, 4> out;
 #if defined(__SSE2__)
         const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(centroid), _mm_load_ps(lo)), _mm_load_ps(scale));

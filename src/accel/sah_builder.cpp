@@ -160,17 +160,16 @@ private:
             fill_bins(begin, end, map, bins);
             const SplitChoice best = cheapest_split(bins);
             if (best.axis >= 0) {
-                const int best_axis = best.axis;
-                const uint32_t best_bin = best.last_left_bin;
                 const float area = rb.bounds.bounds().half_area();
                 const float split_cost = config_.traversal_cost * area + best.cost;
                 if (!must_split && split_cost >= area * blocks(count)) return false;
                 out.left.bounds = Box4::empty();
                 out.right.bounds = Box4::empty();
                 for (uint32_t b = 0; b < map.bins; ++b)
-                    if (bins.count[best_axis][b] != 0)
-                        (b <= best_bin ? out.left : out.right).bounds.extend(bins.bounds[best_axis][b]);
-                out.mid = partition(begin, end, map, best_axis, best_bin, out.left.centroids, out.right.centroids);
+                    if (bins.count[best.axis][b] != 0)
+                        (b <= best.last_left_bin ? out.left : out.right).bounds.extend(bins.bounds[best.axis][b]);
+                out.mid =
+                    partition(begin, end, map, best.axis, best.last_left_bin, out.left.centroids, out.right.centroids);
                 if (out.mid != begin && out.mid != end) return true;
             }
         }
@@ -198,9 +197,9 @@ private:
         uint32_t mid = begin;
         for (uint32_t i = begin; i < end; ++i) {
             const PrimRef r = refs[i];
-            const bool left = map.bins_of(r)[axis] <= last_left_bin;
             alignas(16) float c[4];
             r.centroid(c);
+            const bool left = map.bins_of_centroid(c)[axis] <= last_left_bin;
             left_centroids.extend_point_if(c, left);
             right_centroids.extend_point_if(c, !left);
             refs[i] = refs[mid];
