@@ -12,6 +12,7 @@
 #include <atomic>
 #include <bit>
 #include <stdexcept>
+#include <vector>
 
 namespace glint {
 
@@ -21,7 +22,8 @@ using namespace sah;
 
 /// Ranges at least this large bin and bound their primitives with parallel reductions.
 constexpr uint32_t kParallelScan = 1u << 15;
-/// Subtrees at least this large are built as separate tasks.
+/// Subtrees at least this large are built as separate tasks; smaller ones by one thread
+/// alone (Builder::build_alone).
 constexpr uint32_t kParallelTask = 1u << 11;
 
 class Builder {
@@ -45,26 +47,64 @@ private:
     /// a scan, a child's from its parent's split (find_split), so that every level reads its
     /// primitives twice (binning, partition) rather than three times.
     void build(uint32_t node_index, uint32_t begin, uint32_t end, int depth, const RangeBounds& rb) {
-        BvhNode& node = nodes_[node_index];
+        if (end - begin < kParallelTask) {
+            build_alone(node_index, begin, end, depth, rb);
+            return;
+        }
+        Children children;
+        if (!split_or_leaf(nodes_[node_index], begin, end, depth, rb, children)) return;
+        const uint32_t first_child = node_count_.fetch_add(2, std::memory_order_relaxed);
+        nodes_[node_index].index = first_child;
+        const uint32_t mid = children.mid;
+        tbb::parallel_invoke([&] { build(first_child, begin, mid, depth + 1, children.left); },
+                             [&] { build(first_child + 1, mid, end, depth + 1, children.right); });
+    }
+
+    /// A subtree small enough for one thread: built into a local array (its root at 0), then
+    /// placed in the shared one with a single claim of the node count. Claimed pair by pair,
+    /// the shared count's cache line went back and forth between the cores at every claim:
+    /// the dragon's binary tree took 28 ms on two threads instead of 23 (docs/performance.md,
+    /// "Two threads sharing one cache line"). Sibling pairs stay adjacent: the whole local
+    /// array moves by one offset.
+    void build_alone(uint32_t node_index, uint32_t begin, uint32_t end, int depth, const RangeBounds& rb) {
+        std::vector<BvhNode> local(1);
+        local.reserve(2 * size_t(end - begin) - 1);  // the most nodes a binary tree over them has
+        build_local(local, 0, begin, end, depth, rb);
+        const auto claimed = static_cast<uint32_t>(local.size() - 1);
+        // Local node i > 0 becomes node offset + i; the root takes `node_index`.
+        const uint32_t offset = claimed == 0 ? 0 : node_count_.fetch_add(claimed, std::memory_order_relaxed) - 1;
+        auto placed = [offset](BvhNode node) {
+            if (!node.is_leaf()) node.index += offset;
+            return node;
+        };
+        nodes_[node_index] = placed(local[0]);
+        for (size_t i = 1; i < local.size(); ++i) nodes_[offset + i] = placed(local[i]);
+    }
+
+    void build_local(std::vector<BvhNode>& local, uint32_t node_index, uint32_t begin, uint32_t end, int depth,
+                     const RangeBounds& rb) {
+        Children children;
+        if (!split_or_leaf(local[node_index], begin, end, depth, rb, children)) return;
+        const auto first_child = static_cast<uint32_t>(local.size());
+        local.resize(local.size() + 2);
+        local[node_index].index = first_child;
+        build_local(local, first_child, begin, children.mid, depth + 1, children.left);
+        build_local(local, first_child + 1, children.mid, end, depth + 1, children.right);
+    }
+
+    /// Makes `node` the leaf of [begin, end), or an inner node whose split into `children`
+    /// this finds (false for a leaf); the caller sets an inner node's first child.
+    bool split_or_leaf(BvhNode& node, uint32_t begin, uint32_t end, int depth, const RangeBounds& rb,
+                       Children& children) {
         node.bounds = rb.bounds.bounds();
         const uint32_t count = end - begin;
-        Children children;
         if (count == 1 || !find_split(begin, end, rb, depth, children)) {
             node.index = begin;
             node.count = count;
-            return;
+            return false;
         }
-        const uint32_t first_child = node_count_.fetch_add(2, std::memory_order_relaxed);
-        node.index = first_child;
         node.count = 0;
-        const uint32_t mid = children.mid;
-        if (count >= kParallelTask) {
-            tbb::parallel_invoke([&] { build(first_child, begin, mid, depth + 1, children.left); },
-                                 [&] { build(first_child + 1, mid, end, depth + 1, children.right); });
-        } else {
-            build(first_child, begin, mid, depth + 1, children.left);
-            build(first_child + 1, mid, end, depth + 1, children.right);
-        }
+        return true;
     }
 
     [[nodiscard]] RangeBounds range_bounds(uint32_t begin, uint32_t end) const {
@@ -212,7 +252,10 @@ private:
     UninitializedArray<PrimRef>& refs_;
     const BvhBuildConfig& config_;
     UninitializedArray<BvhNode>& nodes_;
-    std::atomic<uint32_t> node_count_{1};
+    /// On a cache line of its own: the members above are read in every loop of every thread,
+    /// and each claim would otherwise take their line away from the other core (32 ms
+    /// instead of 28 for the dragon's binary tree on two threads).
+    alignas(64) std::atomic<uint32_t> node_count_{1};
 };
 
 }  // namespace
