@@ -1,7 +1,8 @@
 // The binned SAH build (accel/sah_builder.h) splits where the surface-area heuristic says:
 // separated clusters part at the root where the heuristic's sum says, along whichever axis
 // separates them and however many empty bins lie between; a box no split can improve
-// stays a leaf, and every primitive is in exactly one leaf; and where every primitive has a
+// stays a leaf, and every primitive is in exactly one leaf; primitives that fit one leaf
+// split only where the split costs less; and where every primitive has a
 // bin of its own, the root takes the cheapest of all splits, by the full heuristic, and so
 // does a child, binned over its own centroids; and every node's box is exactly the union of
 // its primitives' boxes; boxes computed on demand give the same tree, without the empty ones.
@@ -93,6 +94,35 @@ TEST(SahBuilder, ABoxNoSplitImprovesStaysOneLeafAndEveryPrimitiveIsInOneLeaf) {
     ASSERT_EQ(ids.size(), grid.size());
     for (uint32_t i = 0; i < ids.size(); ++i) ASSERT_EQ(ids[i], i);
     for (const BvhNode& n : bvh.nodes) EXPECT_LE(n.count, 4u);
+}
+
+TEST(SahBuilder, PrimitivesThatFitOneLeafSplitOnlyWhereTheSplitCostsLess) {
+    // Unit cubes 100 apart along x: a long thin box whose children are small.
+    auto spread = [](int count) {
+        std::vector<Bounds3> boxes;
+        for (int i = 0; i < count; ++i)
+            boxes.emplace_back(Vec3(100.0f * float(i), 0, 0), Vec3(100.0f * float(i) + 1, 1, 1));
+        return boxes;
+    };
+    // Blocks of one: the leaf of two costs 2A = 406, the split A + 3 + 3 = 209.
+    const BinaryBvh two = build_binary_bvh(spread(2), {});
+    ASSERT_FALSE(two.nodes.empty());
+    EXPECT_FALSE(two.nodes[0].is_leaf());
+
+    // Blocks of four: four cubes are one block, A = 603, and any split costs at least the
+    // traversal's A, so they stay a leaf...
+    BvhBuildConfig blocks_of_four;
+    blocks_of_four.leaf_block_log2 = 2;
+    const BinaryBvh four = build_binary_bvh(spread(4), blocks_of_four);
+    ASSERT_EQ(four.nodes.size(), 1u);
+    EXPECT_EQ(four.nodes[0].count, 4u);
+
+    // ...unless a traversal costs a quarter of a block: two pairs cost 603 / 4 + 203 + 203 = 557.
+    BvhBuildConfig cheap_traversal = blocks_of_four;
+    cheap_traversal.traversal_cost = 0.25f;
+    const BinaryBvh split = build_binary_bvh(spread(4), cheap_traversal);
+    ASSERT_FALSE(split.nodes.empty());
+    EXPECT_FALSE(split.nodes[0].is_leaf());
 }
 
 /// Eight boxes of random extents whose centres lie 10 apart on every axis (in a random order
