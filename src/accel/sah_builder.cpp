@@ -64,7 +64,7 @@ private:
     /// placed in the shared one with a single claim of the node count. Claimed pair by pair,
     /// the shared count's cache line went back and forth between the cores at every claim:
     /// the dragon's binary tree took 28 ms on two threads instead of 23 (docs/performance.md,
-    /// "Two threads sharing one cache line"). Sibling pairs stay adjacent: the whole local
+    /// "Two threads, one cache line"). Sibling pairs stay adjacent: the whole local
     /// array moves by one offset.
     void build_alone(uint32_t node_index, uint32_t begin, uint32_t end, int depth, const RangeBounds& rb) {
         std::vector<BvhNode> local(1);
