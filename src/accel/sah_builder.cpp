@@ -81,6 +81,7 @@ private:
         for (size_t i = 1; i < local.size(); ++i) nodes_[offset + i] = placed(local[i]);
     }
 
+    /// build() within `local`: the children of each split are appended to it as a pair.
     void build_local(std::vector<BvhNode>& local, uint32_t node_index, uint32_t begin, uint32_t end, int depth,
                      const RangeBounds& rb) {
         Children children;
