@@ -268,10 +268,6 @@ private:
     alignas(64) std::atomic<uint32_t> node_count_{1};
 };
 
-}  // namespace
-
-namespace {
-
 /// The references to all primitives whose bounds are not empty, in index order. Filled in
 /// parallel straight from `bounds`, without an array of every primitive's box.
 UninitializedArray<PrimRef> primitive_refs(uint32_t count, const PrimitiveBounds& bounds) {
@@ -298,13 +294,15 @@ UninitializedArray<PrimRef> primitive_refs(uint32_t count, const PrimitiveBounds
 
 }  // namespace
 
+PrimitiveBounds bounds_copied_from(std::span<const Bounds3> boxes) {
+    return [boxes](uint32_t first, std::span<Bounds3> out) {
+        std::copy_n(boxes.begin() + first, out.size(), out.begin());
+    };
+}
+
 BinaryBvh build_binary_bvh(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config) {
-    return build_binary_bvh(
-        static_cast<uint32_t>(primitive_bounds.size()),
-        [&](uint32_t first, std::span<Bounds3> out) {
-            std::copy_n(primitive_bounds.begin() + first, out.size(), out.begin());
-        },
-        config);
+    return build_binary_bvh(static_cast<uint32_t>(primitive_bounds.size()), bounds_copied_from(primitive_bounds),
+                            config);
 }
 
 BinaryBvh build_binary_bvh(uint32_t count, const PrimitiveBounds& bounds, const BvhBuildConfig& config) {

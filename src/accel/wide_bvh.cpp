@@ -279,12 +279,7 @@ private:
 }  // namespace
 
 void WideBvh::build(std::span<const Bounds3> primitive_bounds, const BvhBuildConfig& config) {
-    build(
-        static_cast<uint32_t>(primitive_bounds.size()),
-        [&](uint32_t first, std::span<Bounds3> out) {
-            std::copy_n(primitive_bounds.begin() + first, out.size(), out.begin());
-        },
-        config);
+    build(static_cast<uint32_t>(primitive_bounds.size()), bounds_copied_from(primitive_bounds), config);
 }
 
 void WideBvh::build(uint32_t count, const PrimitiveBounds& bounds, const BvhBuildConfig& config) {

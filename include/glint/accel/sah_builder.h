@@ -60,6 +60,9 @@ inline constexpr int kMaxBinaryBvhDepth = kMaxSahDepth + 32;
 /// Called from several threads at once, on disjoint ranges.
 using PrimitiveBounds = std::function<void(uint32_t first, std::span<Bounds3> out)>;
 
+/// PrimitiveBounds that copies the boxes from `boxes`, which must outlive it.
+[[nodiscard]] PrimitiveBounds bounds_copied_from(std::span<const Bounds3> boxes);
+
 /// The same build over `count` primitives whose boxes `bounds` computes on demand: a large
 /// mesh needs no array of every triangle's box, which cost a pass and its page faults.
 [[nodiscard]] BinaryBvh build_binary_bvh(uint32_t count, const PrimitiveBounds& bounds, const BvhBuildConfig& config);
