@@ -244,18 +244,20 @@ private:
     uint32_t partition(uint32_t begin, uint32_t end, const BinMapping& map, int axis, uint32_t last_left_bin,
                        Box4& left_centroids, Box4& right_centroids) {
         PrimRef* refs = refs_.data();
+        Box4 left_box = left_centroids, right_box = right_centroids;
         uint32_t mid = begin;
         for (uint32_t i = begin; i < end; ++i) {
             const PrimRef r = refs[i];
             alignas(16) float c[4];
             r.centroid(c);
             const bool left = map.bins_of_centroid(c)[axis] <= last_left_bin;
-            left_centroids.extend_point_if(c, left);
-            right_centroids.extend_point_if(c, !left);
-            refs[i] = refs[mid];
-            refs[mid] = r;
+            left_box.extend_point_if(c, left);
+            right_box.extend_point_if(c, !left);
+            swap_refs(refs[i], refs[mid]);
             mid += left;
         }
+        left_centroids = left_box;
+        right_centroids = right_box;
         return mid;
     }
 
