@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <utility>
@@ -194,6 +195,15 @@ public:
         for (uint32_t b = 0; b < used_; ++b) mask |= uint64_t(count[axis][b] != 0) << b;
 #endif
         return mask;
+    }
+
+    /// The union of the boxes of `axis`'s bins whose bits `mask` sets (nonempty() or a part
+    /// of it), taken in bin order. Children's boxes come from the bins this way: testing
+    /// every bin's count instead mispredicted at random and was 8 % of the binary build.
+    [[nodiscard]] Box4 union_of(int axis, uint64_t mask) const {
+        Box4 u = Box4::empty();
+        for (; mask != 0; mask &= mask - 1) u.extend(bounds[axis][std::countr_zero(mask)]);
+        return u;
     }
 
     // Boxes are left uninitialised past `used`, counts past counted() (copying them would

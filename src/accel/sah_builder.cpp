@@ -213,11 +213,10 @@ private:
                 const float area = rb.bounds.bounds().half_area();
                 const float split_cost = config_.traversal_cost * area + best.cost;
                 if (!must_split && split_cost >= area * blocks(count)) return false;
-                out.left.bounds = Box4::empty();
-                out.right.bounds = Box4::empty();
-                for (uint32_t b = 0; b < map.bins; ++b)
-                    if (bins.count[best.axis][b] != 0)
-                        (b <= best.last_left_bin ? out.left : out.right).bounds.extend(bins.bounds[best.axis][b]);
+                const uint64_t used = bins.nonempty(best.axis);
+                const uint64_t left_bins = used & (~uint64_t(0) >> (63 - best.last_left_bin));
+                out.left.bounds = bins.union_of(best.axis, left_bins);
+                out.right.bounds = bins.union_of(best.axis, used & ~left_bins);
                 out.mid =
                     partition(begin, end, map, best.axis, best.last_left_bin, out.left.centroids, out.right.centroids);
                 if (out.mid != begin && out.mid != end) return true;
