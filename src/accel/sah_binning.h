@@ -21,67 +21,76 @@ namespace glint::sah {
 /// The most bins per axis (BvhBuildConfig::bin_count): a mask of 64 bits marks the used ones.
 constexpr uint32_t kMaxBins = 64;
 
-/// A box as two rows of four floats (x, y, z and a spare lane), so that extending one by
-/// another is one min and one max of four lanes where Bounds3 takes six scalar steps:
-/// binning is most of the build (Wald 2007 bins with SSE the same way). Lane by lane the
-/// results are Bounds3's bit for bit (min and max keep the same operand on ties), so the
-/// tree is the one the scalar code built.
-struct alignas(16) Box4 {
-    float lo[4];
-    float hi[4];
+/// A box as one row of eight floats: its low corner (x, y, z and a spare lane), then its
+/// high corner negated (the same). Extending one box by another is then a single min of
+/// eight lanes, where Bounds3 takes six scalar steps and a row for each corner took a min
+/// and a max of four: binning is most of the build (Wald 2007 bins with SSE the same way).
+/// Lane by lane the results are Bounds3's bit for bit: min(−a, −b) = −max(a, b) exactly, and
+/// on ties and NaN min and max keep the same operand, so the tree is the one the scalar code
+/// built.
+struct alignas(32) Box4 {
+    /// lo.x, lo.y, lo.z, spare, −hi.x, −hi.y, −hi.z, spare.
+    float v[8];
 
     /// The empty box (lo > hi), which extending by anything makes that thing.
     [[nodiscard]] static Box4 empty() {
-        return {{kInfinity, kInfinity, kInfinity, kInfinity}, {-kInfinity, -kInfinity, -kInfinity, -kInfinity}};
+        return {{kInfinity, kInfinity, kInfinity, kInfinity, kInfinity, kInfinity, kInfinity, kInfinity}};
     }
 
-    void extend(const Box4& b) { extend_lanes(b.lo, b.hi); }
+    void extend(const Box4& b) {
+#if defined(__AVX__)
+        // minps(a, b) is a < b ? a : b, so minps(new, old) is std::min(old, new).
+        _mm256_storeu_ps(v, _mm256_min_ps(_mm256_loadu_ps(b.v), _mm256_loadu_ps(v)));
+#elif defined(__SSE2__)
+        _mm_storeu_ps(v, _mm_min_ps(_mm_loadu_ps(b.v), _mm_loadu_ps(v)));
+        _mm_storeu_ps(v + 4, _mm_min_ps(_mm_loadu_ps(b.v + 4), _mm_loadu_ps(v + 4)));
+#else
+        for (int i = 0; i < 8; ++i) v[i] = std::min(v[i], b.v[i]);
+#endif
+    }
     /// Extend by the point in the first three lanes of `p`.
-    void extend_point(const float* p) { extend_lanes(p, p); }
+    void extend_point(const float* p) { extend(point(p)); }
     /// Extend by the point in the first three lanes of `p` if `yes`, without a branch.
     void extend_point_if(const float* p, bool yes) {
-#if defined(__SSE2__)
-        // Where `yes` is false the point is replaced by this box's own corners, which leave
-        // it as it is.
-        const __m128 take = _mm_castsi128_ps(_mm_set1_epi32(-int32_t(yes)));
-        const __m128 point = _mm_loadu_ps(p);
-        const __m128 l = _mm_load_ps(lo), h = _mm_load_ps(hi);
-        _mm_store_ps(lo, _mm_min_ps(_mm_or_ps(_mm_and_ps(take, point), _mm_andnot_ps(take, l)), l));
-        _mm_store_ps(hi, _mm_max_ps(_mm_or_ps(_mm_and_ps(take, point), _mm_andnot_ps(take, h)), h));
+#if defined(__AVX__)
+        // Where `yes` is false the point is replaced by the box itself, which leaves it as it is.
+        const __m128 q = _mm_loadu_ps(p);
+        const __m256 row = _mm256_insertf128_ps(_mm256_castps128_ps256(q), _mm_xor_ps(q, _mm_set1_ps(-0.0f)), 1);
+        const __m256 take = _mm256_castsi256_ps(_mm256_set1_epi32(-int32_t(yes)));
+        const __m256 box = _mm256_loadu_ps(v);
+        _mm256_storeu_ps(v, _mm256_min_ps(_mm256_blendv_ps(box, row, take), box));
 #else
         if (yes) extend_point(p);
 #endif
     }
-    [[nodiscard]] Bounds3 bounds() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+    [[nodiscard]] Bounds3 bounds() const { return {{v[0], v[1], v[2]}, {-v[4], -v[5], -v[6]}}; }
     /// Bounds3::half_area of a box that is not empty, by the same sum of products in the same
     /// order, without the conversion to Bounds3 and the emptiness test the split search paid
     /// for each bin (the trees it builds hash the same as before, docs/performance.md).
     [[nodiscard]] float half_area() const {
         alignas(16) float d[4];
 #if defined(__SSE2__)
-        _mm_store_ps(d, _mm_sub_ps(_mm_load_ps(hi), _mm_load_ps(lo)));
+        const __m128 hi = _mm_xor_ps(_mm_loadu_ps(v + 4), _mm_set1_ps(-0.0f));
+        _mm_store_ps(d, _mm_sub_ps(hi, _mm_loadu_ps(v)));
 #else
-        for (int i = 0; i < 4; ++i) d[i] = hi[i] - lo[i];
+        for (int i = 0; i < 4; ++i) d[i] = -v[4 + i] - v[i];
 #endif
         return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
     }
 
 private:
-    void extend_lanes(const float* l, const float* h) {
-#if defined(__SSE2__)
-        // minps(a, b) is a < b ? a : b, so minps(new, old) is std::min(old, new).
-        _mm_store_ps(lo, _mm_min_ps(_mm_loadu_ps(l), _mm_load_ps(lo)));
-        _mm_store_ps(hi, _mm_max_ps(_mm_loadu_ps(h), _mm_load_ps(hi)));
-#else
+    /// The box of the point in the first four lanes of `p`.
+    [[nodiscard]] static Box4 point(const float* p) {
+        Box4 b;
         for (int i = 0; i < 4; ++i) {
-            lo[i] = std::min(lo[i], l[i]);
-            hi[i] = std::max(hi[i], h[i]);
+            b.v[i] = p[i];
+            b.v[4 + i] = -p[i];
         }
-#endif
+        return b;
     }
 };
 
-/// A primitive's box and index in 32 bytes, the index in the spare lane of `box.lo` (as
+/// A primitive's box and index in 32 bytes, the index in the spare lane of the low corner (as
 /// Embree's PrimRef keeps it); that lane's min and max in the bins mean nothing, and no
 /// arithmetic reads it (an index's bits are mostly a denormal float, which would slow an
 /// addition down many times over).
@@ -91,26 +100,27 @@ struct PrimRef {
     PrimRef() = default;
     PrimRef(const Bounds3& b, uint32_t id) : box() {
         for (int a = 0; a < 3; ++a) {
-            box.lo[a] = b.lo[a];
-            box.hi[a] = b.hi[a];
+            box.v[a] = b.lo[a];
+            box.v[4 + a] = -b.hi[a];
         }
-        std::memcpy(&box.lo[3], &id, sizeof id);
-        box.hi[3] = 0.0f;
+        std::memcpy(&box.v[3], &id, sizeof id);
+        box.v[7] = 0.0f;
     }
     [[nodiscard]] uint32_t id() const {
         uint32_t id = 0;
-        std::memcpy(&id, &box.lo[3], sizeof id);
+        std::memcpy(&id, &box.v[3], sizeof id);
         return id;
     }
-    [[nodiscard]] float centroid(int axis) const { return 0.5f * (box.lo[axis] + box.hi[axis]); }
+    /// (lo + hi)/2, as lo − (−hi): the same sum, bit for bit.
+    [[nodiscard]] float centroid(int axis) const { return 0.5f * (box.v[axis] - box.v[4 + axis]); }
     /// The centroid in the first three lanes, 0 in the fourth.
     void centroid(float* out) const {
 #if defined(__SSE2__)
         const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
-        const __m128 lo = _mm_and_ps(_mm_load_ps(box.lo), xyz);
-        _mm_store_ps(out, _mm_mul_ps(_mm_add_ps(lo, _mm_load_ps(box.hi)), _mm_set1_ps(0.5f)));
+        const __m128 lo = _mm_and_ps(_mm_loadu_ps(box.v), xyz);
+        _mm_store_ps(out, _mm_mul_ps(_mm_sub_ps(lo, _mm_loadu_ps(box.v + 4)), _mm_set1_ps(0.5f)));
 #else
-        for (int i = 0; i < 3; ++i) out[i] = 0.5f * (box.lo[i] + box.hi[i]);
+        for (int i = 0; i < 3; ++i) out[i] = 0.5f * (box.v[i] - box.v[4 + i]);
         out[3] = 0.0f;
 #endif
     }
@@ -124,11 +134,9 @@ static_assert(sizeof(PrimRef) == 32);
 /// a tenth of the split search's time (docs/performance.md).
 inline void swap_refs(PrimRef& a, PrimRef& b) {
 #if defined(__AVX__)
-    float* const a_floats = reinterpret_cast<float*>(&a);
-    float* const b_floats = reinterpret_cast<float*>(&b);
-    const __m256 a_whole = _mm256_loadu_ps(a_floats), b_whole = _mm256_loadu_ps(b_floats);
-    _mm256_storeu_ps(a_floats, b_whole);
-    _mm256_storeu_ps(b_floats, a_whole);
+    const __m256 a_whole = _mm256_loadu_ps(a.box.v), b_whole = _mm256_loadu_ps(b.box.v);
+    _mm256_storeu_ps(a.box.v, b_whole);
+    _mm256_storeu_ps(b.box.v, a_whole);
 #else
     std::swap(a, b);
 #endif

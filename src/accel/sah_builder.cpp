@@ -109,15 +109,24 @@ private:
     }
 
     [[nodiscard]] RangeBounds range_bounds(uint32_t begin, uint32_t end) const {
-        auto scan = [&](uint32_t b, uint32_t e, RangeBounds acc) {
+        // Boxes are taken by reference: passed by value, a type aligned to 32 bytes changes
+        // the calling convention between builds with and without AVX (GCC's -Wpsabi note).
+        auto scan = [&](uint32_t b, uint32_t e, const RangeBounds& start) {
+            RangeBounds acc = start;
             for (uint32_t i = b; i < e; ++i) acc.add(refs_[i]);
             return acc;
         };
         if (end - begin < kParallelScan) return scan(begin, end, {});
         return tbb::parallel_reduce(
             tbb::blocked_range<uint32_t>(begin, end, 4096), RangeBounds{},
-            [&](const tbb::blocked_range<uint32_t>& r, RangeBounds acc) { return scan(r.begin(), r.end(), acc); },
-            [](RangeBounds a, const RangeBounds& b) { a.merge(b); return a; });
+            [&](const tbb::blocked_range<uint32_t>& r, const RangeBounds& acc) {
+                return scan(r.begin(), r.end(), acc);
+            },
+            [](const RangeBounds& a, const RangeBounds& b) {
+                RangeBounds merged = a;
+                merged.merge(b);
+                return merged;
+            });
     }
 
     void fill_bins(uint32_t begin, uint32_t end, const BinMapping& map, Bins& out) const {
