@@ -25,6 +25,8 @@ constexpr uint32_t kParallelScan = 1u << 15;
 /// Subtrees at least this large are built as separate tasks; smaller ones by one thread
 /// alone (Builder::build_alone).
 constexpr uint32_t kParallelTask = 1u << 11;
+/// Ranges from this size on are binned into two sets of bins (Builder::bin_range).
+constexpr uint32_t kTwoBinSets = 256;
 
 class Builder {
 public:
@@ -129,25 +131,44 @@ private:
             });
     }
 
+    /// Bins primitive i into `bins`.
+    void bin(uint32_t i, const BinMapping& map, Bins& bins) const {
+        const PrimRef& r = refs_[i];
+        const std::array<uint32_t, 4> k = map.bins_of(r);
+        for (int a = 0; a < 3; ++a) {
+            bins.bounds[a][k[a]].extend(r.box);
+            ++bins.count[a][k[a]];
+        }
+    }
+
+    /// Bins [begin, end) into `out`. From kTwoBinSets primitives on, every other one goes to
+    /// a second set of bins, merged at the end: neighbours often fall in the same bin, and
+    /// in one set each then waits for the other's store to its box (Embree bins two
+    /// primitives at a time for the same reason).
+    void bin_range(uint32_t begin, uint32_t end, const BinMapping& map, Bins& out) const {
+        if (end - begin < kTwoBinSets) {
+            for (uint32_t i = begin; i < end; ++i) bin(i, map, out);
+            return;
+        }
+        Bins odd(map.bins);
+        uint32_t i = begin;
+        for (; i + 1 < end; i += 2) {
+            bin(i, map, out);
+            bin(i + 1, map, odd);
+        }
+        if (i < end) bin(i, map, out);
+        out.merge(odd);
+    }
+
     void fill_bins(uint32_t begin, uint32_t end, const BinMapping& map, Bins& out) const {
-        auto scan = [&](uint32_t b, uint32_t e, Bins& bins) {
-            for (uint32_t i = b; i < e; ++i) {
-                const PrimRef& r = refs_[i];
-                const std::array<uint32_t, 4> k = map.bins_of(r);
-                for (int a = 0; a < 3; ++a) {
-                    bins.bounds[a][k[a]].extend(r.box);
-                    ++bins.count[a][k[a]];
-                }
-            }
-        };
         if (end - begin < kParallelScan) {
-            scan(begin, end, out);
+            bin_range(begin, end, map, out);
             return;
         }
         out = tbb::parallel_reduce(
             tbb::blocked_range<uint32_t>(begin, end, 8192), Bins(map.bins),
             [&](const tbb::blocked_range<uint32_t>& r, Bins acc) {
-                scan(r.begin(), r.end(), acc);
+                bin_range(r.begin(), r.end(), map, acc);
                 return acc;
             },
             [&](Bins a, const Bins& b) {
