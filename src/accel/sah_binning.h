@@ -59,6 +59,12 @@ struct alignas(32) Box4 {
         const __m256 take = _mm256_castsi256_ps(_mm256_set1_epi32(-int32_t(yes)));
         const __m256 box = _mm256_loadu_ps(v);
         _mm256_storeu_ps(v, _mm256_min_ps(_mm256_blendv_ps(box, row, take), box));
+#elif defined(__SSE2__)
+        const __m128 take = _mm_castsi128_ps(_mm_set1_epi32(-int32_t(yes)));
+        const __m128 q = _mm_loadu_ps(p), negated = _mm_xor_ps(q, _mm_set1_ps(-0.0f));
+        const __m128 lo = _mm_loadu_ps(v), neg_hi = _mm_loadu_ps(v + 4);
+        _mm_storeu_ps(v, _mm_min_ps(_mm_or_ps(_mm_and_ps(take, q), _mm_andnot_ps(take, lo)), lo));
+        _mm_storeu_ps(v + 4, _mm_min_ps(_mm_or_ps(_mm_and_ps(take, negated), _mm_andnot_ps(take, neg_hi)), neg_hi));
 #else
         if (yes) extend_point(p);
 #endif
@@ -130,8 +136,8 @@ static_assert(sizeof(PrimRef) == 32);
 /// Exchanges two references (which may be the same), each moved whole: one 32-byte load and
 /// one 32-byte store. The partition swaps at every primitive, and a primitive that stays
 /// put is loaded again by the next swap; copied as a struct, it had been stored as two
-/// 16-byte halves, which the CPU cannot forward to one 32-byte load, and that stall was
-/// a tenth of the split search's time (docs/performance.md).
+/// 16-byte halves, which the CPU cannot forward to one 32-byte load: 13 % of the split
+/// search's samples sat on that stall (docs/performance.md).
 inline void swap_refs(PrimRef& a, PrimRef& b) {
 #if defined(__AVX__)
     const __m256 a_whole = _mm256_loadu_ps(a.box.v), b_whole = _mm256_loadu_ps(b.box.v);
@@ -207,7 +213,7 @@ public:
 
     /// The union of the boxes of `axis`'s bins whose bits `mask` sets (nonempty() or a part
     /// of it), taken in bin order. Children's boxes come from the bins this way: testing
-    /// every bin's count instead mispredicted at random and was 8 % of the binary build.
+    /// every bin's count instead mispredicted at random and cost 9 % of the binary build.
     [[nodiscard]] Box4 union_of(int axis, uint64_t mask) const {
         Box4 u = Box4::empty();
         for (; mask != 0; mask &= mask - 1) u.extend(bounds[axis][std::countr_zero(mask)]);

@@ -273,6 +273,8 @@ private:
     uint32_t partition(uint32_t begin, uint32_t end, const BinMapping& map, int axis, uint32_t last_left_bin,
                        Box4& left_centroids, Box4& right_centroids) {
         PrimRef* refs = refs_.data();
+        // Extended in locals: through the references, which the stores to `refs` might alias,
+        // GCC kept them in memory, a store and a load on every primitive's path.
         Box4 left_box = left_centroids, right_box = right_centroids;
         uint32_t mid = begin;
         for (uint32_t i = begin; i < end; ++i) {
