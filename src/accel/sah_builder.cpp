@@ -278,9 +278,8 @@ private:
         Box4 left_box = left_centroids, right_box = right_centroids;
         uint32_t mid = begin;
         for (uint32_t i = begin; i < end; ++i) {
-            const PrimRef r = refs[i];
             alignas(16) float c[4];
-            r.centroid(c);
+            refs[i].centroid(c);
             const bool left = map.bins_of_centroid(c)[axis] <= last_left_bin;
             left_box.extend_point_if(c, left);
             right_box.extend_point_if(c, !left);
