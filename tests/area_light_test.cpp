@@ -8,11 +8,13 @@
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/integrators/shading_point.h"
+#include "glint/lights/area_light.h"
+#include "glint/materials/texture.h"
 #include "glint/math/constants.h"
 #include "glint/math/frame.h"
 #include "glint/sampling/sampler.h"
-#include "glint/scene/scene.h"
 #include "glint/scene/render_scene.h"
+#include "glint/scene/scene.h"
 
 #include <gtest/gtest.h>
 
@@ -227,4 +229,49 @@ TEST(AreaLight, OneSidedLightsEmitOnTheirFrontOnly) {
     const Light& light = *scene.area_lights()[0];
     EXPECT_FALSE(light.sample(Vec3(0, 0, 0), Vec2(0.5f, 0.5f)).radiance.is_black());
     EXPECT_TRUE(light.sample(Vec3(0, 2, 0), Vec2(0.5f, 0.5f)).radiance.is_black());
+}
+
+namespace {
+
+/// A texture whose colour is its lookup's coordinates, (u, v, 1): it shows which uv a
+/// light sample's emission was looked up at.
+class UvAsColour final : public Texture {
+public:
+    using Texture::evaluate;
+    [[nodiscard]] Color evaluate(const TextureQuery& q) const override { return Color(q.uv.x, q.uv.y, 1.0f); }
+    [[nodiscard]] std::string_view type_name() const override { return "uv"; }
+};
+
+}  // namespace
+
+// Untextured lights skip the sample's texture coordinates (a sphere's cost an atan2 and an
+// acos); a textured one must still look its texture up where the sample lands: at the uv the
+// shape's own interaction gives that point.
+TEST(AreaLight, TexturedLightsEmitTheTextureWhereTheirSamplesLand) {
+    const UvAsColour texture;
+    const Vec3 ref(0.3f, 0.5f, 4.0f);
+    const std::shared_ptr<Shape> shapes[] = {std::make_shared<Sphere>(Vec3(0.0f), 1.0f),
+                                             std::make_shared<Disk>(Vec3(0.0f), Vec3(0.2f, 0.1f, 1.0f), 1.0f),
+                                             std::make_shared<Quad>(Vec3(-1, -1, 0), Vec3(2, 0, 0), Vec3(0, 2, 0))};
+    for (const std::shared_ptr<Shape>& shape : shapes) {
+        SCOPED_TRACE(std::string(shape->type_name()));
+        const AreaLight light(shape, std::nullopt, Color(2.0f), &texture, true);
+        int checked = 0;
+        for (int i = 0; i < 12; ++i)
+            for (int j = 0; j < 12; ++j) {
+                const LightSample ls = light.sample(ref, Vec2((float(i) + 0.5f) / 12.0f, (float(j) + 0.5f) / 12.0f));
+                ASSERT_GT(ls.pdf, 0.0f);
+                Ray ray(ref, ls.direction);
+                Hit hit;
+                ASSERT_TRUE(shape->intersect(ray, hit));
+                SurfaceInteraction si;
+                shape->interaction(ray, hit, si);
+                // Away from the seam where u wraps from 1 to 0 (spheres and disks at φ = 0).
+                if (si.uv.x < 0.01f || si.uv.x > 0.99f) continue;
+                EXPECT_NEAR(ls.radiance.r, 2.0f * si.uv.x, 2e-3f);
+                EXPECT_NEAR(ls.radiance.g, 2.0f * si.uv.y, 2e-3f);
+                ++checked;
+            }
+        EXPECT_GT(checked, 100);
+    }
 }

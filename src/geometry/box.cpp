@@ -83,7 +83,7 @@ float Box::area() const {
     return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
 }
 
-std::optional<ShapeSample> Box::sample_area(Vec2 u) const {
+std::optional<ShapeSample> Box::sample_area(Vec2 u, InteractionDetail /*uv costs nothing here*/) const {
     // Pick an axis pair of faces by their area, then one of the two faces, then a point.
     const Vec3 e = box_.hi - box_.lo;
     const float face_area[3] = {e.y * e.z, e.z * e.x, e.x * e.y};

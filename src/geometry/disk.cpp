@@ -70,12 +70,15 @@ void Disk::interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si, I
 
 float Disk::area() const { return kPi * radius_ * radius_; }
 
-std::optional<ShapeSample> Disk::sample_area(Vec2 u) const {
+std::optional<ShapeSample> Disk::sample_area(Vec2 u, InteractionDetail detail) const {
     const Vec2 d = sample_uniform_disk_concentric(u) * radius_;
-    float phi = std::atan2(d.y, d.x);
-    if (phi < 0.0f) phi += 2.0f * kPi;
-    const Vec2 uv(std::sqrt(d.x * d.x + d.y * d.y) / radius_, phi / (2.0f * kPi));
-    return ShapeSample{center_ + tangent_ * d.x + bitangent_ * d.y, normal_, uv, 1.0f / area()};
+    ShapeSample s{center_ + tangent_ * d.x + bitangent_ * d.y, normal_, Vec2(), 1.0f / area()};
+    if (detail == InteractionDetail::Full) {
+        float phi = std::atan2(d.y, d.x);
+        if (phi < 0.0f) phi += 2.0f * kPi;
+        s.uv = Vec2(std::sqrt(d.x * d.x + d.y * d.y) / radius_, phi / (2.0f * kPi));
+    }
+    return s;
 }
 
 std::shared_ptr<Shape> Disk::from_params_facing(const ParamTable& t, const Vec3& default_normal) {

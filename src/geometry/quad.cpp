@@ -18,7 +18,7 @@ Quad::Quad(const Vec3& corner, const Vec3& edge_u, const Vec3& edge_v)
     area_ = length(n);
 }
 
-std::optional<ShapeSample> Quad::sample_area(Vec2 u) const {
+std::optional<ShapeSample> Quad::sample_area(Vec2 u, InteractionDetail /*uv costs nothing here*/) const {
     // A parallelogram is the affine image of the unit square: uniform in (a, b) is uniform in area.
     return ShapeSample{corner_ + edge_u_ * u.x + edge_v_ * u.y, normal_, u, 1.0f / area_};
 }

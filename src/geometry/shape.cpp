@@ -12,8 +12,8 @@ uint32_t Shape::occluded_packet(const RayPacket& packet) const {
     return occluded_lane_by_lane(packet, [&](const Ray& ray) { return occluded(ray); });
 }
 
-std::optional<ShapeSample> Shape::sample_toward(const Vec3& ref, Vec2 u) const {
-    std::optional<ShapeSample> s = sample_area(u);
+std::optional<ShapeSample> Shape::sample_toward(const Vec3& ref, Vec2 u, InteractionDetail detail) const {
+    std::optional<ShapeSample> s = sample_area(u, detail);
     if (!s) return std::nullopt;
     s->pdf = pdf_toward(ref, s->p, s->n);
     if (!(s->pdf > 0.0f) || !std::isfinite(s->pdf)) return std::nullopt;

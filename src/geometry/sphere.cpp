@@ -88,9 +88,9 @@ Vec2 Sphere::uv_of(const Vec3& n) {
 
 float Sphere::area() const { return 4.0f * kPi * radius_ * radius_; }
 
-std::optional<ShapeSample> Sphere::sample_area(Vec2 u) const {
+std::optional<ShapeSample> Sphere::sample_area(Vec2 u, InteractionDetail detail) const {
     const Vec3 n = sample_uniform_sphere(u);
-    return ShapeSample{center_ + n * radius_, n, uv_of(n), 1.0f / area()};
+    return ShapeSample{center_ + n * radius_, n, detail == InteractionDetail::Full ? uv_of(n) : Vec2(), 1.0f / area()};
 }
 
 namespace {
@@ -104,10 +104,10 @@ constexpr float kThinCone = 0.00068523f;
 
 }  // namespace
 
-std::optional<ShapeSample> Sphere::sample_toward(const Vec3& ref, Vec2 u) const {
+std::optional<ShapeSample> Sphere::sample_toward(const Vec3& ref, Vec2 u, InteractionDetail detail) const {
     const Vec3 to_center = center_ - ref;
     const float dist2 = dot(to_center, to_center);
-    if (dist2 <= radius_ * radius_ * 1.0001f) return Shape::sample_toward(ref, u);
+    if (dist2 <= radius_ * radius_ * 1.0001f) return Shape::sample_toward(ref, u, detail);
     // Uniform direction in the cone, then the point where it meets the sphere, found from
     // the angle α at the centre (pbrt-v4 §6.2.4) rather than by a ray test that could miss
     // at the cone's rim.
@@ -131,7 +131,8 @@ std::optional<ShapeSample> Sphere::sample_toward(const Vec3& ref, Vec2 u) const 
     orthonormal_basis(axis, b1, b2);
     // The surface normal points back towards the receiver, at angle α from −axis.
     const Vec3 n = -(b1 * (sin_alpha * std::cos(phi)) + b2 * (sin_alpha * std::sin(phi)) + axis * cos_alpha);
-    return ShapeSample{center_ + n * radius_, n, uv_of(n), 1.0f / (2.0f * kPi * one_minus_cos_max)};
+    return ShapeSample{center_ + n * radius_, n, detail == InteractionDetail::Full ? uv_of(n) : Vec2(),
+                       1.0f / (2.0f * kPi * one_minus_cos_max)};
 }
 
 float Sphere::pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const {

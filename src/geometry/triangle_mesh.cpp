@@ -219,7 +219,7 @@ void TriangleMesh::prepare_sampling() {
 
 float TriangleMesh::area() const { return triangle_areas_ ? triangle_areas_->total() : 0.0f; }
 
-std::optional<ShapeSample> TriangleMesh::sample_area(Vec2 u) const {
+std::optional<ShapeSample> TriangleMesh::sample_area(Vec2 u, InteractionDetail detail) const {
     if (!triangle_areas_) return std::nullopt;
     float u_remapped = 0.0f;
     const std::size_t t = triangle_areas_->sample(u.x, nullptr, &u_remapped);
@@ -231,8 +231,9 @@ std::optional<ShapeSample> TriangleMesh::sample_area(Vec2 u) const {
     ShapeSample s;
     s.p = p0 * b[0] + p1 * b[1] + p2 * b[2];
     s.n = normalize(cross(p1 - p0, p2 - p0));
-    s.uv = data_.uvs.empty() ? Vec2(b[1], b[2])
-                             : data_.uvs[idx[0]] * b[0] + data_.uvs[idx[1]] * b[1] + data_.uvs[idx[2]] * b[2];
+    if (detail == InteractionDetail::Full)
+        s.uv = data_.uvs.empty() ? Vec2(b[1], b[2])
+                                 : data_.uvs[idx[0]] * b[0] + data_.uvs[idx[1]] * b[1] + data_.uvs[idx[2]] * b[2];
     s.pdf = 1.0f / triangle_areas_->total();
     return s;
 }

@@ -30,9 +30,13 @@ public:
     /// Area and sampling are the whole shape's: a cut-out emitter is sampled where it is cut
     /// too (unbiased, but the samples there are wasted).
     [[nodiscard]] float area() const override { return shape_->area(); }
-    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override { return shape_->sample_area(u); }
-    [[nodiscard]] std::optional<ShapeSample> sample_toward(const Vec3& ref, Vec2 u) const override {
-        return shape_->sample_toward(ref, u);
+    [[nodiscard]] std::optional<ShapeSample> sample_area(
+        Vec2 u, InteractionDetail detail = InteractionDetail::Full) const override {
+        return shape_->sample_area(u, detail);
+    }
+    [[nodiscard]] std::optional<ShapeSample> sample_toward(
+        const Vec3& ref, Vec2 u, InteractionDetail detail = InteractionDetail::Full) const override {
+        return shape_->sample_toward(ref, u, detail);
     }
     [[nodiscard]] float pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const override {
         return shape_->pdf_toward(ref, p, n);

@@ -25,7 +25,8 @@ public:
                      InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] float area() const override;
     /// Shirley & Chiu's concentric map: uniform in area, strata kept compact.
-    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
+    [[nodiscard]] std::optional<ShapeSample> sample_area(
+        Vec2 u, InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] std::size_t memory_bytes() const override { return sizeof(*this); }
     [[nodiscard]] std::string_view type_name() const override { return "disk"; }
 

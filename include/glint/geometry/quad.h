@@ -26,7 +26,8 @@ public:
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
                      InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] float area() const override { return area_; }
-    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
+    [[nodiscard]] std::optional<ShapeSample> sample_area(
+        Vec2 u, InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] std::size_t memory_bytes() const override { return sizeof(*this); }
     [[nodiscard]] std::string_view type_name() const override { return "quad"; }
 

@@ -23,6 +23,8 @@ struct ShapeSample {
     Vec3 p;
     /// Unit normal on the side the shape calls outside.
     Vec3 n;
+    /// Texture coordinates; (0, 0) when sampled with InteractionDetail::WithoutTextureCoordinates
+    /// by a shape whose coordinates cost something (a sphere's: an atan2 and an acos).
     Vec2 uv;
     /// Density of the choice: per unit area (sample_area) or per unit solid angle at the
     /// receiving point (sample_toward).
@@ -97,15 +99,20 @@ public:
     /// Surface area in object space; 0 for a shape that cannot be sampled (it cannot be an
     /// area light; its emission is then only seen).
     [[nodiscard]] virtual float area() const { return 0.0f; }
-    /// A point uniformly distributed over the surface (pdf = 1/area per unit area).
-    [[nodiscard]] virtual std::optional<ShapeSample> sample_area(Vec2 u) const {
+    /// A point uniformly distributed over the surface (pdf = 1/area per unit area). With
+    /// InteractionDetail::WithoutTextureCoordinates the shape may leave uv at (0, 0): an
+    /// untextured light never reads it.
+    [[nodiscard]] virtual std::optional<ShapeSample> sample_area(
+        Vec2 u, InteractionDetail detail = InteractionDetail::Full) const {
         (void)u;
+        (void)detail;
         return std::nullopt;
     }
     /// A point as seen from `ref`, with its density per unit solid angle at `ref`. The
     /// default converts area sampling: pdf_ω = pdf_A·d²/|cos θ_light| (pbrt-v4 §6.1.4);
     /// shapes with a better strategy (spheres: the cone they subtend) override it.
-    [[nodiscard]] virtual std::optional<ShapeSample> sample_toward(const Vec3& ref, Vec2 u) const;
+    [[nodiscard]] virtual std::optional<ShapeSample> sample_toward(
+        const Vec3& ref, Vec2 u, InteractionDetail detail = InteractionDetail::Full) const;
     /// The density sample_toward(ref, ·) has at the surface point p with unit normal n.
     [[nodiscard]] virtual float pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const;
     /// Build what sampling needs (a mesh's triangle distribution); called once before a

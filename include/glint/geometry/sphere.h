@@ -20,10 +20,12 @@ public:
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
                      InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] float area() const override;
-    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
+    [[nodiscard]] std::optional<ShapeSample> sample_area(
+        Vec2 u, InteractionDetail detail = InteractionDetail::Full) const override;
     /// From outside: uniform over the cone of directions the sphere subtends (pbrt-v4 §6.2.4),
     /// so every sample hits the visible cap; from inside: uniform over the area.
-    [[nodiscard]] std::optional<ShapeSample> sample_toward(const Vec3& ref, Vec2 u) const override;
+    [[nodiscard]] std::optional<ShapeSample> sample_toward(
+        const Vec3& ref, Vec2 u, InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] float pdf_toward(const Vec3& ref, const Vec3& p, const Vec3& n) const override;
     [[nodiscard]] std::size_t memory_bytes() const override { return sizeof(*this); }
     [[nodiscard]] std::string_view type_name() const override { return "sphere"; }

@@ -68,7 +68,8 @@ public:
     void prepare() override;
     [[nodiscard]] float area() const override;
     /// A triangle chosen by area (needs prepare_sampling()), then a uniform point in it.
-    [[nodiscard]] std::optional<ShapeSample> sample_area(Vec2 u) const override;
+    [[nodiscard]] std::optional<ShapeSample> sample_area(
+        Vec2 u, InteractionDetail detail = InteractionDetail::Full) const override;
     void prepare_sampling() override;
     [[nodiscard]] std::size_t primitive_count() const override { return triangle_count(); }
     [[nodiscard]] std::size_t memory_bytes() const override;
