@@ -63,8 +63,10 @@ TEST(Sampler, SameInputsSameNumbersOtherPixelsOtherNumbers) {
 
 TEST(Sampler, SampleSetsAreStratifiedInBothProjections) {
     // Kensler's correlated multi-jitter on an m×n grid (m = ⌊√N⌋, n = ⌈N/m⌉): y falls in
-    // N distinct strata of height 1/N, x in distinct strata of width 1/(m·n).
-    for (const uint32_t count : {1u, 5u, 16u, 24u}) {
+    // N distinct strata of height 1/N, x in distinct strata of width 1/(m·n). Grids of up
+    // to 64 × 64 take their column and row permutations from tables, larger ones (65 × 65,
+    // 64 × 65) one by one.
+    for (const uint32_t count : {1u, 5u, 16u, 24u, 30u, 100u, 4225u, 4160u}) {
         Sampler sampler(3, 1);
         sampler.start_pixel_sample(0, 0);
         std::vector<Vec2> points(count);

@@ -1,5 +1,7 @@
 #include "glint/sampling/sampler.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <pcg_random.hpp>
 
@@ -22,7 +24,10 @@ constexpr float unit_float(uint64_t bits) { return float(bits >> 40) * 0x1p-24f;
 
 }  // namespace
 
-uint32_t permutation_element(uint32_t i, uint32_t l, uint32_t p) {
+namespace {
+
+/// permutation_element, inlined where a set takes many elements.
+[[gnu::always_inline]] inline uint32_t permute(uint32_t i, uint32_t l, uint32_t p) {
     // Kensler 2013, Listing 3: a hash on the smallest power of two ≥ l, with cycle walking.
     uint32_t w = l - 1;
     w |= w >> 1;
@@ -50,10 +55,9 @@ uint32_t permutation_element(uint32_t i, uint32_t l, uint32_t p) {
         i &= w;
         i ^= i >> 5;
     } while (i >= l);
-    return (i + p) % l;
+    // (i + p) mod l: a mask where l is a power of two, not a division.
+    return (l & (l - 1)) == 0 ? (i + p) & (l - 1) : (i + p) % l;
 }
-
-namespace {
 
 /// Kensler 2013, Listing 4: a float in [0, 1) hashed from (i, p).
 float hashed_float(uint32_t i, uint32_t p) {
@@ -70,20 +74,41 @@ float hashed_float(uint32_t i, uint32_t p) {
     return float(i >> 8) * 0x1p-24f;
 }
 
+/// Correlated multi-jittered points (Kensler 2013, Listing 6) of one set: `count` points in
+/// an m×n grid, the samples, the grid's columns and its rows each shuffled by their own
+/// permutation of `pattern`.
+struct MultiJitterGrid {
+    uint32_t count, m, n, pattern;
+    MultiJitterGrid(uint32_t count_, uint32_t pattern_)
+        : count(count_),
+          m(static_cast<uint32_t>(std::sqrt(double(count_)))),
+          n((count_ + m - 1) / m),
+          pattern(pattern_) {}
+    /// Where sample s goes: its shuffled index, whose column is its index mod m and whose
+    /// row its index / m.
+    [[nodiscard]] uint32_t shuffled(uint32_t s) const { return permute(s, count, pattern * 0x51633e2du); }
+    /// Where column c and row r go.
+    [[nodiscard]] uint32_t column(uint32_t c) const { return permute(c, m, pattern * 0x68bc21ebu); }
+    [[nodiscard]] uint32_t row(uint32_t r) const { return permute(r, n, pattern * 0x02e5be93u); }
+    /// The point of shuffled sample s in column sx and row sy.
+    [[nodiscard]] Vec2 point(uint32_t s, uint32_t sx, uint32_t sy) const {
+        const float jx = hashed_float(s, pattern * 0x967a889bu);
+        const float jy = hashed_float(s, pattern * 0x368cc8b7u);
+        const float x = (float(sx) + (float(sy) + jx) / float(n)) / float(m);
+        const float y = (float(s) + jy) / float(count);
+        // Rounding can land exactly on 1 for the last stratum; keep the half-open interval.
+        return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
+    }
+};
+
 }  // namespace
 
+uint32_t permutation_element(uint32_t i, uint32_t l, uint32_t p) { return permute(i, l, p); }
+
 Vec2 correlated_multi_jitter(uint32_t s, uint32_t count, uint32_t p) {
-    const auto m = static_cast<uint32_t>(std::sqrt(double(count)));
-    const uint32_t n = (count + m - 1) / m;
-    s = permutation_element(s, count, p * 0x51633e2du);
-    const uint32_t sx = permutation_element(s % m, m, p * 0x68bc21ebu);
-    const uint32_t sy = permutation_element(s / m, n, p * 0x02e5be93u);
-    const float jx = hashed_float(s, p * 0x967a889bu);
-    const float jy = hashed_float(s, p * 0x368cc8b7u);
-    const float x = (float(sx) + (float(sy) + jx) / float(n)) / float(m);
-    const float y = (float(s) + jy) / float(count);
-    // Rounding can land exactly on 1 for the last stratum; keep the half-open interval.
-    return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
+    const MultiJitterGrid grid(count, p);
+    s = grid.shuffled(s);
+    return grid.point(s, grid.column(s % grid.m), grid.row(s / grid.m));
 }
 
 Sampler::Sampler(uint64_t seed, uint32_t samples_per_axis) : seed_(seed), n_(samples_per_axis < 1 ? 1 : samples_per_axis) {}
@@ -113,7 +138,21 @@ void Sampler::next_2d_set(std::span<Vec2> out) {
     const uint64_t h = dimension_hash(dimension_++);
     // A fresh pattern for every pixel sample, so the sets of different samples differ.
     const auto pattern = uint32_t(mix64(h ^ index_));
-    for (uint32_t s = 0; s < out.size(); ++s) out[s] = correlated_multi_jitter(s, uint32_t(out.size()), pattern);
+    const MultiJitterGrid grid(uint32_t(out.size()), pattern);
+    // correlated_multi_jitter for each sample, with the permutations of the grid's m columns
+    // and n rows taken once for the set, not once per sample (for grids of up to 64 × 64).
+    constexpr uint32_t kMaxSide = 64;
+    if (grid.m > kMaxSide || grid.n > kMaxSide) {
+        for (uint32_t s = 0; s < out.size(); ++s) out[s] = correlated_multi_jitter(s, grid.count, pattern);
+        return;
+    }
+    std::array<uint32_t, kMaxSide> columns, rows;
+    for (uint32_t c = 0; c < grid.m; ++c) columns[c] = grid.column(c);
+    for (uint32_t r = 0; r < grid.n; ++r) rows[r] = grid.row(r);
+    for (uint32_t s = 0; s < out.size(); ++s) {
+        const uint32_t shuffled = grid.shuffled(s);
+        out[s] = grid.point(shuffled, columns[shuffled % grid.m], rows[shuffled / grid.m]);
+    }
 }
 
 }  // namespace glint
