@@ -111,11 +111,15 @@ Vec2 correlated_multi_jitter(uint32_t s, uint32_t count, uint32_t p) {
     return grid.point(s, grid.column(s % grid.m), grid.row(s / grid.m));
 }
 
-Sampler::Sampler(uint64_t seed, uint32_t samples_per_axis) : seed_(seed), n_(samples_per_axis < 1 ? 1 : samples_per_axis) {}
+Sampler::Sampler(uint64_t seed, uint32_t samples_per_axis)
+    : seed_(seed),
+      seed_hash_(mix64(seed ^ 0x9e3779b97f4a7c15ull)),
+      n_(samples_per_axis < 1 ? 1 : samples_per_axis),
+      pixel_hash_(hash_pixel(0)) {}
 
-uint64_t Sampler::dimension_hash(uint32_t dimension) const {
-    return mix64(mix64(mix64(seed_ ^ 0x9e3779b97f4a7c15ull) ^ pixel_) ^ dimension);
-}
+uint64_t Sampler::hash_pixel(uint64_t pixel) const { return mix64(seed_hash_ ^ pixel); }
+
+uint64_t Sampler::dimension_hash(uint32_t dimension) const { return mix64(pixel_hash_ ^ dimension); }
 
 float Sampler::next_1d() {
     const uint64_t h = dimension_hash(dimension_++);

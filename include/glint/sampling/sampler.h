@@ -26,7 +26,7 @@ public:
 
     /// Begin sample `index` (0 … n²−1) of the pixel with linear index `pixel`.
     void start_pixel_sample(uint64_t pixel, uint32_t index) {
-        pixel_ = pixel;
+        pixel_hash_ = hash_pixel(pixel);
         index_ = index;
         dimension_ = 0;
         // The pixel's PCG32 stream drew two numbers per sample in order: jump to this sample's
@@ -55,11 +55,15 @@ public:
     [[nodiscard]] uint32_t samples_per_axis() const { return n_; }
 
 private:
+    /// The hash of (seed, pixel) that every dimension's hash starts from.
+    [[nodiscard]] uint64_t hash_pixel(uint64_t pixel) const;
     [[nodiscard]] uint64_t dimension_hash(uint32_t dimension) const;
 
     uint64_t seed_;
+    /// The seed's part of every hash, and the pixel's: hashed once, not on every draw.
+    uint64_t seed_hash_;
     uint32_t n_;
-    uint64_t pixel_ = 0;
+    uint64_t pixel_hash_ = 0;
     uint32_t index_ = 0;
     uint32_t dimension_ = 0;
     Vec2 pixel_2d_;
