@@ -63,7 +63,7 @@ private:
     /// The seed's part of every hash, and the pixel's: hashed once, not on every draw.
     uint64_t seed_hash_;
     uint32_t n_;
-    uint64_t pixel_hash_ = 0;
+    uint64_t pixel_hash_;
     uint32_t index_ = 0;
     uint32_t dimension_ = 0;
     Vec2 pixel_2d_;
