@@ -99,17 +99,18 @@ struct MultiJitterGrid {
         // Rounding can land exactly on 1 for the last stratum; keep the half-open interval.
         return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
     }
+    /// Sample s, its column and row permuted on the spot.
+    [[nodiscard]] Vec2 sample(uint32_t s) const {
+        const uint32_t i = shuffled(s);
+        return point(i, column(i % m), row(i / m));
+    }
 };
 
 }  // namespace
 
 uint32_t permutation_element(uint32_t i, uint32_t l, uint32_t p) { return permute(i, l, p); }
 
-Vec2 correlated_multi_jitter(uint32_t s, uint32_t count, uint32_t p) {
-    const MultiJitterGrid grid(count, p);
-    s = grid.shuffled(s);
-    return grid.point(s, grid.column(s % grid.m), grid.row(s / grid.m));
-}
+Vec2 correlated_multi_jitter(uint32_t s, uint32_t count, uint32_t p) { return MultiJitterGrid(count, p).sample(s); }
 
 Sampler::Sampler(uint64_t seed, uint32_t samples_per_axis)
     : seed_(seed),
@@ -147,7 +148,7 @@ void Sampler::next_2d_set(std::span<Vec2> out) {
     // and n rows taken once for the set, not once per sample (for grids of up to 64 × 64).
     constexpr uint32_t kMaxSide = 64;
     if (grid.m > kMaxSide || grid.n > kMaxSide) {
-        for (uint32_t s = 0; s < out.size(); ++s) out[s] = correlated_multi_jitter(s, grid.count, pattern);
+        for (uint32_t s = 0; s < out.size(); ++s) out[s] = grid.sample(s);
         return;
     }
     std::array<uint32_t, kMaxSide> columns, rows;
