@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
 
@@ -60,6 +61,69 @@ TEST(AnimatedTransform, AMirroredKeyKeepsItsMirror) {
     const AnimatedTransform motion({{0.0f, mirrored}, {1.0f, turned}});
     expect_same_transform(motion.at(0.5f), Transform::rotate(30.0f, {1, 0, 0}) * mirrored, 2e-5f);
     EXPECT_TRUE(motion.at(0.5f).swaps_handedness());
+}
+
+TEST(AnimatedTransform, EachTimeCarriesTheInverseOfItsTransform) {
+    // Rays enter a moving object through the inverse, built from the parts (S⁻¹·Rᵀ·T⁻¹):
+    // M·M⁻¹ must be the identity at every time, for a turn with a stretch that is not
+    // uniform, for keys of another handedness than the first, and for three keys.
+    const Transform start = Transform::translate({1, -2, 0.5f}) * Transform::scale({0.5f, 2, 1});
+    const Transform end =
+        Transform::translate({-3, 1, 2}) * Transform::rotate(130.0f, {1, 2, 0.5f}) * Transform::scale({3, 1, 0.25f});
+    const Transform mirrored = Transform::rotate(40.0f, {0, 0, 1}) * Transform::scale({-1, 2, 1});
+    const AnimatedTransform turning({{0.0f, start}, {1.0f, end}});
+    const AnimatedTransform mirror({{0.0f, mirrored}, {1.0f, Transform::rotate(200.0f, {0, 1, 0}) * mirrored}});
+    const AnimatedTransform three({{0.0f, start}, {0.5f, end}, {2.0f, Transform::translate({0, 4, 0})}});
+    for (const AnimatedTransform* motion : {&turning, &mirror, &three})
+        for (const float time : {0.1f, 0.37f, 0.5f, 0.9f, 1.4f}) {
+            const Transform t = motion->at(time);
+            const Matrix4 product = t.matrix() * t.inverse_matrix();
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j)
+                    EXPECT_NEAR(product.m[i][j], i == j ? 1.0f : 0.0f, 2e-6f)
+                        << "time " << time << ", entry " << i << "," << j;
+        }
+}
+
+TEST(AnimatedTransform, AFlipThroughNoThicknessStaysFinite) {
+    // Scale x from 1 to −1: the stretch blends through zero halfway, where the object is
+    // flat. The transform at that instant stands for a time a step before, so that its
+    // inverse exists (the matrix used to be inverted there, and had none).
+    const AnimatedTransform flip({{0.0f, Transform()}, {1.0f, Transform::scale({-1, 1, 1})}});
+    const Transform halfway = flip.at(0.5f);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            EXPECT_TRUE(std::isfinite(halfway.matrix().m[i][j])) << i << "," << j;
+            EXPECT_TRUE(std::isfinite(halfway.inverse_matrix().m[i][j])) << i << "," << j;
+        }
+    EXPECT_NEAR(std::abs(halfway.point({1, 0, 0}).x) + std::abs(halfway.point({1, 0, 0}).y) +
+                    std::abs(halfway.point({1, 0, 0}).z),
+                0.0f, 1e-6f)
+        << "flat at that instant";
+}
+
+TEST(SlerpArc, TurnsAtConstantSpeedAlongTheShorterArc) {
+    // From no turn to 160° about an axis: each point is a unit quaternion at s·160° from the
+    // start. The end given as −q (the same rotation) is reached the short way, not by 200°.
+    const auto about = [](double degrees, double x, double y, double z) {
+        const double half = degrees * 3.14159265358979323846 / 360.0, n = std::sqrt(x * x + y * y + z * z);
+        return Quaternion{std::cos(half), std::sin(half) * x / n, std::sin(half) * y / n, std::sin(half) * z / n};
+    };
+    const Quaternion a = about(10.0, 0, 1, 0), b = about(170.0, 0, 1, 0);
+    const Quaternion minus_b{-b.w, -b.x, -b.y, -b.z};
+    const double radians = 3.14159265358979323846 / 180.0;
+    for (const Quaternion& end : {b, minus_b}) {
+        const SlerpArc arc(a, end);
+        for (const double s : {0.0, 0.1, 0.25, 0.5, 0.8, 1.0}) {
+            const Quaternion q = arc.at(s);
+            EXPECT_NEAR(dot(q, q), 1.0, 1e-12) << "s " << s;
+            EXPECT_NEAR(angle_between(a, q), s * 160.0 * radians, 1e-7) << "s " << s;
+            EXPECT_NEAR(angle_between(q, b), (1.0 - s) * 160.0 * radians, 1e-7) << "s " << s;
+        }
+    }
+    // Nearly the same rotation: the linear blend, normalised, halfway.
+    const Quaternion near_a = about(11.0, 0, 1, 0);
+    EXPECT_NEAR(angle_between(a, SlerpArc(a, near_a).at(0.5)), 0.5 * radians, 1e-7);
 }
 
 TEST(AnimatedTransform, BoundsHoldEveryPlacementOverTheInterval) {

@@ -68,6 +68,9 @@ AnimatedTransform::AnimatedTransform(std::vector<MotionKey> keys) : keys_(std::m
             throw std::invalid_argument("motion key " + std::to_string(i + 1) + " is a projective transform");
         parts_.push_back(decompose(keys_[i].transform));
     }
+    for (std::size_t i = 0; i + 1 < keys_.size(); ++i)
+        intervals_.push_back(
+            {SlerpArc(parts_[i].rotation, parts_[i + 1].rotation), keys_[i].transform == keys_[i + 1].transform});
 }
 
 AnimatedTransform::Parts AnimatedTransform::decompose(const Transform& t) {
@@ -107,17 +110,43 @@ AnimatedTransform::Parts AnimatedTransform::decompose(const Transform& t) {
 Transform AnimatedTransform::interpolate(std::size_t i, double s) const {
     const Parts& a = parts_[i];
     const Parts& b = parts_[i + 1];
-    const Matrix3 rotation = slerp(a.rotation, b.rotation, s).to_rotation();
     Matrix3 stretch;
-    for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) stretch[row][col] = (1.0 - s) * a.stretch[row][col] + s * b.stretch[row][col];
-    const Matrix3 linear = multiply(rotation, stretch);
-    Matrix4 m = Matrix4::identity();
-    for (int row = 0; row < 3; ++row) {
-        m.m[row][3] = float((1.0 - s) * a.translation[std::size_t(row)] + s * b.translation[std::size_t(row)]);
-        for (int col = 0; col < 3; ++col) m.m[row][col] = float(linear[row][col]);
+    auto blend_stretch = [&] {
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 3; ++col)
+                stretch[row][col] = (1.0 - s) * a.stretch[row][col] + s * b.stretch[row][col];
+    };
+    blend_stretch();
+    // M = T·R·S, so M⁻¹ = S⁻¹·Rᵀ·T⁻¹. Keys of one handedness have stretches of one sign of
+    // definiteness, and so has their blend: S is invertible. Between a mirrored key and one
+    // that is not, the object flattens at one instant (det S = 0), where it has no area to
+    // be hit; a time a step before stands in for it. (s > 0: key i itself is invertible.)
+    while (determinant(stretch) == 0.0) {
+        s = std::nextafter(s, 0.0);
+        blend_stretch();
     }
-    return Transform(m);
+    const Matrix3 rotation = intervals_[i].rotation.at(s).to_rotation();
+    const Matrix3 linear = multiply(rotation, stretch);
+    const Matrix3 stretch_inverse_t = inverse_transpose(stretch);
+    Matrix3 inverse_linear{};  // S⁻¹·Rᵀ
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col)
+            for (int k = 0; k < 3; ++k) inverse_linear[row][col] += stretch_inverse_t[k][row] * rotation[col][k];
+    double translation[3];
+    for (int row = 0; row < 3; ++row)
+        translation[row] = (1.0 - s) * a.translation[std::size_t(row)] + s * b.translation[std::size_t(row)];
+    Matrix4 m = Matrix4::identity(), inverse = Matrix4::identity();
+    for (int row = 0; row < 3; ++row) {
+        m.m[row][3] = float(translation[row]);
+        double inverse_translation = 0.0;
+        for (int col = 0; col < 3; ++col) {
+            m.m[row][col] = float(linear[row][col]);
+            inverse.m[row][col] = float(inverse_linear[row][col]);
+            inverse_translation -= inverse_linear[row][col] * translation[col];
+        }
+        inverse.m[row][3] = float(inverse_translation);
+    }
+    return Transform(m, inverse);
 }
 
 Transform AnimatedTransform::at(float time) const {
@@ -127,7 +156,7 @@ Transform AnimatedTransform::at(float time) const {
         std::upper_bound(keys_.begin(), keys_.end(), time, [](float t, const MotionKey& key) { return t < key.time; });
     const std::size_t i = std::size_t(next - keys_.begin()) - 1;
     if (time == keys_[i].time) return keys_[i].transform;
-    if (keys_[i].transform == keys_[i + 1].transform) return keys_[i].transform;
+    if (intervals_[i].still) return keys_[i].transform;
     return interpolate(i, (double(time) - keys_[i].time) / (double(keys_[i + 1].time) - keys_[i].time));
 }
 

@@ -48,22 +48,33 @@ double angle_between(const Quaternion& a, const Quaternion& b) {
     return 2.0 * std::acos(std::clamp(std::abs(dot(a, b)), 0.0, 1.0));
 }
 
-Quaternion slerp(const Quaternion& a, const Quaternion& b_in, double s) {
-    // q and −q are the same rotation: turn b to a's hemisphere for the shorter arc.
-    Quaternion b = b_in;
+Quaternion slerp(const Quaternion& a, const Quaternion& b, double s) { return SlerpArc(a, b).at(s); }
+
+SlerpArc::SlerpArc(const Quaternion& a, const Quaternion& b) : a_(a), b_(b) {
     double c = dot(a, b);
     if (c < 0.0) {
-        b = {-b.w, -b.x, -b.y, -b.z};
+        b_ = {-b.w, -b.x, -b.y, -b.z};
         c = -c;
     }
-    double wa = 1.0 - s, wb = s;
     // Nearly equal rotations: sin θ → 0, and the linear blend is the limit.
     if (c < 0.9995) {
-        const double theta = std::acos(c);
-        wa = std::sin((1.0 - s) * theta) / std::sin(theta);
-        wb = std::sin(s * theta) / std::sin(theta);
+        theta_ = std::acos(c);
+        cot_theta_ = c / std::sin(theta_);
+        inv_sin_theta_ = 1.0 / std::sin(theta_);
     }
-    return normalized({wa * a.w + wb * b.w, wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z});
+}
+
+Quaternion SlerpArc::at(double s) const {
+    if (theta_ == 0.0) {
+        return normalized({(1.0 - s) * a_.w + s * b_.w, (1.0 - s) * a_.x + s * b_.x, (1.0 - s) * a_.y + s * b_.y,
+                           (1.0 - s) * a_.z + s * b_.z});
+    }
+    // Shoemake's weights sin((1 − s)θ)/sin θ and sin(sθ)/sin θ; the first by the angle
+    // difference identity, sin((1 − s)θ) = sin θ cos(sθ) − cos θ sin(sθ), so that one sincos
+    // gives both. The blend of two unit quaternions by these weights is a unit quaternion.
+    const double sin_s_theta = std::sin(s * theta_), cos_s_theta = std::cos(s * theta_);
+    const double wa = cos_s_theta - cot_theta_ * sin_s_theta, wb = sin_s_theta * inv_sin_theta_;
+    return {wa * a_.w + wb * b_.w, wa * a_.x + wb * b_.x, wa * a_.y + wb * b_.y, wa * a_.z + wb * b_.z};
 }
 
 }  // namespace glint

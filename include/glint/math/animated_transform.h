@@ -39,14 +39,21 @@ private:
         Quaternion rotation;
         std::array<std::array<double, 3>, 3> stretch{};
     };
+    /// From key i to key i + 1: the rotation's arc, and whether the two keys are equal.
+    struct Interval {
+        SlerpArc rotation;
+        bool still = false;
+    };
     [[nodiscard]] static Parts decompose(const Transform& t);
-    /// Between keys i and i + 1, at s in [0, 1].
+    /// Between keys i and i + 1, at s in [0, 1]; the inverse from the parts, not by
+    /// inverting the matrix (a ray meets this once per moving object it passes).
     [[nodiscard]] Transform interpolate(std::size_t i, double s) const;
     /// Bounds of [t0, t1] ∩ [key i, key i + 1].
     void extend_over_interval(std::size_t i, const Bounds3& object_bounds, float t0, float t1, Bounds3& out) const;
 
     std::vector<MotionKey> keys_;
     std::vector<Parts> parts_;
+    std::vector<Interval> intervals_;
 };
 
 }  // namespace glint

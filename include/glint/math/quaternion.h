@@ -23,4 +23,18 @@ struct Quaternion {
 /// (s = 0) to `b` (s = 1).
 [[nodiscard]] Quaternion slerp(const Quaternion& a, const Quaternion& b, double s);
 
+/// The shorter arc from `a` to `b`, set up once for many points on it (a moving object's
+/// rotation at every ray's time): each point costs one sincos, where slerp() takes an acos,
+/// three sines and a normalisation. at(s) is slerp(a, b, s) to rounding.
+class SlerpArc {
+public:
+    SlerpArc(const Quaternion& a, const Quaternion& b);
+    [[nodiscard]] Quaternion at(double s) const;
+
+private:
+    Quaternion a_, b_;    // b_ on a_'s side of the sphere: q and −q are the same rotation
+    double theta_ = 0.0;  // the arc's angle on the unit sphere; 0 where the blend is linear
+    double cot_theta_ = 0.0, inv_sin_theta_ = 0.0;
+};
+
 }  // namespace glint
