@@ -262,6 +262,41 @@ TEST(QuadPackets, EveryLaneGetsWhatItsRayGetsAlone) {
     }
 }
 
+TEST(SpherePackets, EveryShadowLaneGetsWhatItsRayGetsAlone) {
+    // Rays from a camera and from everywhere around; shadow rays leaving the surface (from
+    // just off it, as the integrators start them) toward points all around, some ending just
+    // before the far side; rays grazing the sphere (tangent at distance r) and rays along a
+    // tangent from a point on it (q = 0 there: both roots 0), with segments that hold t = 0
+    // and segments that do not.
+    const Sphere sphere(Vec3(0.4f, -0.3f, 1.2f), 0.8f);
+    const Bounds3 box = sphere.bounds();
+    std::vector<Ray> rays = camera_rays(box, Vec3(0.3f, 0.5f, 0.8f), 32);
+    for (const Ray& r : random_rays(box, 2000, 5)) rays.push_back(r);
+    const Vec3 c = sphere.center();
+    const float r = sphere.radius();
+    for (int i = 0; i < 200; ++i) {
+        const float theta = 0.7f * float(i), phi = 0.31f * float(i);
+        const Vec3 n(std::sin(phi) * std::cos(theta), std::cos(phi), std::sin(phi) * std::sin(theta));
+        const Vec3 tangent = normalize(cross(n, std::abs(n.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0)));
+        const Vec3 on_surface = c + n * r;
+        const Vec3 target =
+            c + Vec3(std::cos(0.9f * float(i)), std::sin(1.3f * float(i)), std::cos(2.1f * float(i))) * 3.0f;
+        const Vec3 to_target = target - on_surface;
+        rays.emplace_back(on_surface + n * 1e-4f, to_target, 1e-4f, 0.9999f);  // a shadow ray
+        rays.emplace_back(on_surface, -n, 1e-4f, 2.0f * r * 0.9999f);          // to just before the far side
+        rays.emplace_back(on_surface + n * 2.0f - tangent * 3.0f, tangent, 0.0f, kInfinity);  // outside, passing by
+        rays.emplace_back(on_surface - tangent * 3.0f, tangent, 0.0f, kInfinity);             // grazing
+        rays.emplace_back(on_surface, tangent, -1.0f, 1.0f);                // along a tangent, holding t = 0
+        rays.emplace_back(on_surface, tangent, 0.0f, 1.0f);                 // the same, not holding it
+        rays.emplace_back(c + n * (0.5f * r), to_target, 0.0f, kInfinity);  // from inside
+    }
+    rays.resize(rays.size() / RayPacket::kSize * RayPacket::kSize);
+    const int hits = expect_shape_packets_agree(sphere, rays, RayPacket::kAllLanes);
+    EXPECT_GT(hits, int(rays.size()) / 10);
+    EXPECT_LT(hits, int(rays.size()) * 9 / 10);
+    for (const uint32_t lanes : {0x01u, 0x80u, 0x5au}) expect_shape_packets_agree(sphere, rays, lanes);
+}
+
 /// A scene of `copies` placements of the icosphere (turned, stretched, one mirrored; the
 /// first of glass, which shadow rays pass under DielectricShadows::None), a sphere if
 /// `sphere`, an icosphere of its own (carried into world space when prepared) and a floor
@@ -361,6 +396,37 @@ TEST(ScenePackets, AMovingObjectIsWhereEachLanesTimePutsIt) {
     ASSERT_TRUE(scene.has_motion());
     const std::vector<Ray> rays = scene_rays(scene);
     EXPECT_GT(expect_scene_packets_agree(scene, rays), int(rays.size()) / 10);
+}
+
+TEST(ScenePackets, AMovingObjectPlacedOnceForLanesThatShareATime) {
+    // Shadow rays toward one light leave one point at one time: a moving object is placed
+    // once for such a packet and takes its lanes together. A sphere and an icosphere travel
+    // 3 units along x during the shutter; bundles of eight rays, each bundle at one time, aim
+    // at where the pair is then (and where it was at the start, which it has left).
+    Scene description;
+    const uint32_t matte = description.add_material(Material{});
+    const Transform sphere_start = Transform::translate(Vec3(0.0f, 0.0f, 0.0f));
+    const Transform mesh_start = Transform::translate(Vec3(0.0f, 1.5f, 0.0f)) * Transform::scale(Vec3(0.6f));
+    const Transform travel = Transform::translate(Vec3(3.0f, 0.0f, 0.0f));
+    const uint32_t sphere = description.add_object(std::make_shared<Sphere>(Vec3(0.0f), 0.5f), matte, sphere_start);
+    const uint32_t mesh = description.add_object(
+        std::make_shared<TriangleMesh>(load_mesh_data(glint_test::kTestDataDir / "icosphere.ply")), matte, mesh_start);
+    description.set_motion(sphere, AnimatedTransform({{0.0f, sphere_start}, {1.0f, travel * sphere_start}}));
+    description.set_motion(mesh, AnimatedTransform({{0.0f, mesh_start}, {1.0f, travel * mesh_start}}));
+    const RenderScene scene(std::move(description));
+    std::vector<Ray> rays;
+    for (int bundle = 0; bundle < 64; ++bundle) {
+        const float time = float(bundle % 9) / 8.0f;
+        const float x = bundle % 2 ? 3.0f * time : 0.0f;  // where the pair is, or where it was
+        const Vec3 from(x + 0.3f * std::sin(float(bundle)), 0.7f, 6.0f);
+        for (uint32_t lane = 0; lane < RayPacket::kSize; ++lane) {
+            const Vec3 at(x + 0.12f * float(lane) - 0.42f, lane % 2 ? 1.5f : 0.1f * float(lane % 3), 0.0f);
+            Ray ray(from, at - from, 0.0f, lane % 3 ? kInfinity : 0.99f);
+            ray.time = time;
+            rays.push_back(ray);
+        }
+    }
+    EXPECT_GT(expect_scene_packets_agree(scene, rays), int(rays.size()) / 4);
 }
 
 TEST(ScenePackets, AnEmptySceneHitsNothing) {

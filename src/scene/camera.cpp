@@ -1,6 +1,7 @@
 #include "glint/scene/camera.h"
 
 #include "glint/math/constants.h"
+#include "glint/math/multiply_add.h"
 
 #include <algorithm>
 #include <cmath>
@@ -112,17 +113,6 @@ namespace {
 /// (handout §4.2.2).
 [[gnu::always_inline]] inline Vec2 screen_position(float x, float y, int width, int height) {
     return {2.0f * x / float(width) - 1.0f, 1.0f - 2.0f * y / float(height)};
-}
-
-/// a·b + c in one rounding where the CPU has FMA, in two where it has not (and the compiler
-/// then fuses nothing). Written out where one ray and eight must agree: left to itself, the
-/// compiler fuses different products of a scalar expression than of its vectorised loop.
-[[gnu::always_inline]] inline float multiply_add(float a, float b, float c) {
-#if defined(__FMA__)
-    return std::fma(a, b, c);
-#else
-    return a * b + c;
-#endif
 }
 
 /// normalize(), its dot product written out with multiply_add.

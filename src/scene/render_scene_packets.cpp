@@ -6,6 +6,7 @@
 #include "glint/scene/render_scene.h"
 
 #include <bit>
+#include <optional>
 
 namespace glint {
 
@@ -21,6 +22,16 @@ RayPacket lanes_of(const RayPacket& packet, uint32_t lanes, const IntoObject& in
         local.set(lane, into_object(packet.ray(lane)));
     }
     return local;
+}
+
+/// The time all of `lanes` share, if they do: the shadow rays of one point toward one light
+/// leave at its time, so a moving object needs its placement only once for all of them.
+std::optional<float> shared_time(const RayPacket& packet, uint32_t lanes) {
+    if (lanes == 0) return std::nullopt;
+    const float time = packet.time[std::countr_zero(lanes)];
+    for (; lanes; lanes &= lanes - 1)
+        if (packet.time[std::countr_zero(lanes)] != time) return std::nullopt;
+    return time;
 }
 
 }  // namespace
@@ -60,6 +71,11 @@ uint32_t RenderScene::occluded_by_object_packet(uint32_t index, const RayPacket&
     const HotObject& o = objects_[index];
     if (o.dielectric && mode == DielectricShadows::None) return 0;
     if (o.motion) {
+        if (const std::optional<float> time = shared_time(packet, lanes)) {
+            const Transform object_from_world = o.motion->at(*time).inverse();
+            return o.shape->occluded_packet(
+                lanes_of(packet, lanes, [&](const Ray& r) { return object_from_world.ray(r); }));
+        }
         RayPacket moving = packet;
         moving.active = lanes;
         return occluded_lane_by_lane(moving, [&](const Ray& ray) { return occluded_by_object(index, ray, mode); });

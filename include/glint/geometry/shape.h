@@ -65,7 +65,8 @@ public:
     /// return the lanes that hit; intersect_packet() shrinks their tmax and fills their
     /// hits (all but the object). Each lane gets what its ray would get alone (at a tie of
     /// two primitives at one t, possibly the other). The defaults take the lanes one by
-    /// one; a mesh traces them together.
+    /// one; a mesh traces them together, a quad (and a sphere's occluded_packet) tests them
+    /// in a few SIMD operations.
     virtual uint32_t intersect_packet(RayPacket& packet, PacketHits& hits) const;
     [[nodiscard]] virtual uint32_t occluded_packet(const RayPacket& packet) const;
     /// Whether the packet queries trace the lanes together through a structure they share

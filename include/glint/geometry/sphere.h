@@ -17,6 +17,8 @@ public:
     [[nodiscard]] Bounds3 bounds() const override;
     bool intersect(Ray& ray, Hit& hit) const override;
     [[nodiscard]] bool occluded(const Ray& ray) const override;
+    /// All lanes at once (the roots' arithmetic without branches, vectorised across lanes).
+    [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet) const override;
     void interaction(const Ray& ray, const Hit& hit, SurfaceInteraction& si,
                      InteractionDetail detail = InteractionDetail::Full) const override;
     [[nodiscard]] float area() const override;

@@ -76,10 +76,12 @@ public:
         return occluded_packet(packet, scene_.dielectric_shadows);
     }
     [[nodiscard]] uint32_t occluded_packet(const RayPacket& packet, DielectricShadows mode) const;
-    /// Whether coherent rays trace faster here as packets than one by one: some object's
-    /// shape traces packets together (a mesh through its BVH). Analytic shapes take packets
-    /// lane by lane, at some cost, even under a top level of many objects (glint-scene-bench:
-    /// shadow-ray packets rendered spheres.toml 5 % slower).
+    /// Whether camera rays and the first hits' shadow rays toward point lights trace faster
+    /// here as packets than one by one: some object's shape traces packets together (a mesh
+    /// through its BVH). Analytic shapes take those packets at some cost, even under a top
+    /// level of many objects (glint-scene-bench: shadow-ray packets rendered spheres.toml 5 %
+    /// slower). An area light's samples from one point pay in every scene: their rays share
+    /// their way and their time (docs/performance.md).
     [[nodiscard]] bool packets_pay() const { return packets_pay_; }
     /// intersect() and occluded() that also count the nodes and primitives they test (the
     /// viewer's heatmaps); same results.
