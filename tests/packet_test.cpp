@@ -266,8 +266,8 @@ TEST(SpherePackets, EveryShadowLaneGetsWhatItsRayGetsAlone) {
     // Rays from a camera and from everywhere around; shadow rays leaving the surface (from
     // just off it, as the integrators start them) toward points all around, some ending just
     // before the far side; rays grazing the sphere (tangent at distance r) and rays along a
-    // tangent from a point on it (q = 0 there: both roots 0), with segments that hold t = 0
-    // and segments that do not.
+    // tangent from a point on it (both roots at or within rounding of 0, q near 0), with
+    // segments that hold t = 0 and segments that do not.
     const Sphere sphere(Vec3(0.4f, -0.3f, 1.2f), 0.8f);
     const Bounds3 box = sphere.bounds();
     std::vector<Ray> rays = camera_rays(box, Vec3(0.3f, 0.5f, 0.8f), 32);
@@ -295,6 +295,14 @@ TEST(SpherePackets, EveryShadowLaneGetsWhatItsRayGetsAlone) {
     EXPECT_GT(hits, int(rays.size()) / 10);
     EXPECT_LT(hits, int(rays.size()) * 9 / 10);
     for (const uint32_t lanes : {0x01u, 0x80u, 0x5au}) expect_shape_packets_agree(sphere, rays, lanes);
+    // q exactly 0: a unit sphere at the origin, rays from points exactly on it along exact
+    // tangents (b = 0, discriminant 0), whose roots are both t = 0.
+    const Sphere unit(Vec3(0.0f), 1.0f);
+    std::vector<Ray> tangents;
+    for (const auto& [p, d] : {std::pair{Vec3(1, 0, 0), Vec3(0, 1, 0)}, std::pair{Vec3(0, -1, 0), Vec3(0, 0, 1)},
+                               std::pair{Vec3(0, 0, 1), Vec3(-1, 0, 0)}, std::pair{Vec3(-1, 0, 0), Vec3(0, 0, -2)}})
+        for (const float tmin : {-1.0f, 0.0f}) tangents.emplace_back(p, d, tmin, 1.0f);
+    EXPECT_EQ(expect_shape_packets_agree(unit, tangents, RayPacket::kAllLanes), 4) << "t = 0 lies in (-1, 1) only";
 }
 
 /// A scene of `copies` placements of the icosphere (turned, stretched, one mirrored; the
