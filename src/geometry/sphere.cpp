@@ -23,13 +23,6 @@ Sphere::Sphere(const Vec3& center, float radius) : center_(center), radius_(radi
 
 Bounds3 Sphere::bounds() const { return {center_ - Vec3(radius_), center_ + Vec3(radius_)}; }
 
-namespace {
-
-/// a·b with its sums fused in one fixed order, as the packet test computes it.
-float dot_fused(const Vec3& a, const Vec3& b) { return multiply_add(a.z, b.z, multiply_add(a.y, b.y, a.x * b.x)); }
-
-}  // namespace
-
 // Inlined into intersect() and occluded(): called, it handed its roots back through memory.
 [[gnu::always_inline]] inline bool Sphere::roots(const Ray& ray, float& t_near, float& t_far) const {
     // Numerically stable form (Haines et al., "Precision Improvements for Ray/Sphere

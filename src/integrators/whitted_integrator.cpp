@@ -181,27 +181,25 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         std::vector<Vec2> large;
         const std::span<Vec2> us = stratified_set(context.sampler, light_samples_, small, large);
         const float weight = 1.0f / float(light_samples_);
-        if constexpr (!Record) {
-            if (us.size() > 1) {
-                // The samples' shadow rays leave one point toward one light: they share their
-                // way through the scene, and trace faster as packets of eight (explain traces
-                // and records them one by one; the answers are the same).
-                for (std::size_t first = 0; first < us.size(); first += RayPacket::kSize) {
-                    const auto n = uint32_t(std::min<std::size_t>(RayPacket::kSize, us.size() - first));
-                    const auto ls = per_lane([&](uint32_t k) {
-                        return k < n ? light->sample_at_surface(si.p, bsdf.normal(), us[first + k]) : LightSample{};
-                    });
-                    RayPacket packet;
-                    for (uint32_t k = 0; k < n; ++k)  // those from under the surface go alone (add())
-                        if (casts_shadow_ray(ls[k]) && dot(ls[k].direction, ng) >= 0.0f)
-                            packet.set(k, shadow_ray(si.p, ng, ls[k], si.time));
-                    const uint32_t blocked = packet.active ? scene.occluded_packet(packet) : 0;
-                    for (uint32_t k = 0; k < n; ++k)
-                        add(ls[k], weight, i,
-                            (packet.active >> k & 1) ? std::optional((blocked >> k & 1) != 0) : std::nullopt);
-                }
-                continue;
+        if (!Record && us.size() > 1) {
+            // The samples' shadow rays leave one point toward one light: they share their
+            // way through the scene, and trace faster as packets of eight (explain traces
+            // and records them one by one; the answers are the same).
+            for (std::size_t first = 0; first < us.size(); first += RayPacket::kSize) {
+                const auto n = uint32_t(std::min<std::size_t>(RayPacket::kSize, us.size() - first));
+                const auto ls = per_lane([&](uint32_t k) {
+                    return k < n ? light->sample_at_surface(si.p, bsdf.normal(), us[first + k]) : LightSample{};
+                });
+                RayPacket packet;
+                for (uint32_t k = 0; k < n; ++k)  // those from under the surface go alone (add())
+                    if (casts_shadow_ray(ls[k]) && dot(ls[k].direction, ng) >= 0.0f)
+                        packet.set(k, shadow_ray(si.p, ng, ls[k], si.time));
+                const uint32_t blocked = packet.active ? scene.occluded_packet(packet) : 0;
+                for (uint32_t k = 0; k < n; ++k)
+                    add(ls[k], weight, i,
+                        (packet.active >> k & 1) ? std::optional((blocked >> k & 1) != 0) : std::nullopt);
             }
+            continue;
         }
         for (const Vec2& u : us) add(light->sample_at_surface(si.p, bsdf.normal(), u), weight, i);
     }

@@ -115,9 +115,9 @@ namespace {
     return {2.0f * x / float(width) - 1.0f, 1.0f - 2.0f * y / float(height)};
 }
 
-/// normalize(), its dot product written out with multiply_add.
+/// normalize(), its dot product rounded one fixed way (dot_fused).
 [[gnu::always_inline]] inline Vec3 unit_vector(const Vec3& v) {
-    const float length = std::sqrt(multiply_add(v.z, v.z, multiply_add(v.y, v.y, v.x * v.x)));
+    const float length = std::sqrt(dot_fused(v, v));
     return {v.x / length, v.y / length, v.z / length};
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 /// \file a·b + c rounded one way, whatever the optimiser does.
 
+#include "glint/math/vec3.h"
+
 #include <cmath>
 
 namespace glint {
@@ -15,6 +17,11 @@ namespace glint {
 #else
     return a * b + c;
 #endif
+}
+
+/// a·b with its sums fused in one fixed order (z last), as SIMD code across lanes computes it.
+[[gnu::always_inline]] inline float dot_fused(const Vec3& a, const Vec3& b) {
+    return multiply_add(a.z, b.z, multiply_add(a.y, b.y, a.x * b.x));
 }
 
 }  // namespace glint
