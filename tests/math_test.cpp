@@ -1,5 +1,6 @@
 #include "glint/math/bounds3.h"
 #include "glint/math/color.h"
+#include "glint/math/divisor.h"
 #include "glint/math/frame.h"
 #include "glint/math/matrix3x4.h"
 #include "glint/math/offset_ray.h"
@@ -7,9 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
+#include <vector>
 
 using namespace glint;
 
@@ -183,4 +187,38 @@ TEST(Color, SrgbRoundTripAndKnownValues) {
     EXPECT_NEAR(srgb_to_linear(0.0f), 0.0f, 1e-6f);
     EXPECT_NEAR(srgb_to_linear(0.5f), 0.21404f, 1e-4f);  // IEC 61966-2-1
     for (float v = 0.0f; v <= 1.0f; v += 0.01f) EXPECT_NEAR(linear_to_srgb(srgb_to_linear(v)), v, 1e-5f);
+}
+
+TEST(Divisor, GivesWhatDivisionGivesBitForBit) {
+    // Powers of two (the shift, mask and product) and others (the divisions), small and large.
+    std::vector<uint32_t> divisors;
+    for (uint32_t d = 1; d <= 70; ++d) divisors.push_back(d);
+    for (const uint32_t d : {1u << 20, 1u << 31, 3u << 20, 4095u, 0xffffffffu}) divisors.push_back(d);
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<uint32_t> any_uint;
+    // Floats of every magnitude the bits allow (subnormals included), and the samplers'
+    // stratum plus jitter.
+    std::vector<float> xs = {0.0f,
+                             1.0f,
+                             0x1.fffffep-1f,
+                             63.999996f,
+                             std::numeric_limits<float>::denorm_min(),
+                             std::numeric_limits<float>::min(),
+                             std::numeric_limits<float>::max()};
+    for (int k = 0; k < 2000; ++k) {
+        const float x = std::bit_cast<float>(any_uint(rng) & 0x7fffffffu);
+        if (std::isfinite(x)) xs.push_back(x);
+        xs.push_back(float(k % 64) + std::uniform_real_distribution<float>(0.0f, 1.0f)(rng));
+    }
+    for (const uint32_t d : divisors) {
+        const Divisor by(d);
+        EXPECT_EQ(by.value(), d);
+        for (uint32_t k = 0; k < 3000; ++k) {
+            const uint32_t i = k < 1000 ? k : k < 1010 ? 0xffffffffu - (k - 1000) : any_uint(rng);
+            ASSERT_EQ(by.quotient(i), i / d) << i << " / " << d;
+            ASSERT_EQ(by.remainder(i), i % d) << i << " % " << d;
+        }
+        for (const float x : xs)
+            ASSERT_EQ(std::bit_cast<uint32_t>(by.divide(x)), std::bit_cast<uint32_t>(x / float(d))) << x << " / " << d;
+    }
 }

@@ -79,11 +79,17 @@ float hashed_float(uint32_t i, uint32_t p) {
 /// permutation of `pattern`.
 struct MultiJitterGrid {
     uint32_t count, m, n, pattern;
+    /// The three divisions of every point (for the usual sets of 4, 16 or 64 points, powers
+    /// of two: shifts and products).
+    Divisor by_count, by_m, by_n;
     MultiJitterGrid(uint32_t count_, uint32_t pattern_)
         : count(count_),
           m(static_cast<uint32_t>(std::sqrt(double(count_)))),
           n((count_ + m - 1) / m),
-          pattern(pattern_) {}
+          pattern(pattern_),
+          by_count(count),
+          by_m(m),
+          by_n(n) {}
     /// Where sample s goes: its shuffled index, whose column is its index mod m and whose
     /// row its index / m.
     [[nodiscard]] uint32_t shuffled(uint32_t s) const { return permute(s, count, pattern * 0x51633e2du); }
@@ -94,15 +100,15 @@ struct MultiJitterGrid {
     [[nodiscard]] Vec2 point(uint32_t s, uint32_t sx, uint32_t sy) const {
         const float jx = hashed_float(s, pattern * 0x967a889bu);
         const float jy = hashed_float(s, pattern * 0x368cc8b7u);
-        const float x = (float(sx) + (float(sy) + jx) / float(n)) / float(m);
-        const float y = (float(s) + jy) / float(count);
+        const float x = by_m.divide(float(sx) + by_n.divide(float(sy) + jx));
+        const float y = by_count.divide(float(s) + jy);
         // Rounding can land exactly on 1 for the last stratum; keep the half-open interval.
         return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
     }
     /// Sample s, its column and row permuted on the spot.
     [[nodiscard]] Vec2 sample(uint32_t s) const {
         const uint32_t i = shuffled(s);
-        return point(i, column(i % m), row(i / m));
+        return point(i, column(by_m.remainder(i)), row(by_m.quotient(i)));
     }
 };
 
@@ -116,6 +122,8 @@ Sampler::Sampler(uint64_t seed, uint32_t samples_per_axis)
     : seed_(seed),
       seed_hash_(mix64(seed ^ 0x9e3779b97f4a7c15ull)),
       n_(samples_per_axis < 1 ? 1 : samples_per_axis),
+      by_n_(n_),
+      by_strata_(n_ * n_),
       pixel_hash_(hash_pixel(0)) {}
 
 uint64_t Sampler::hash_pixel(uint64_t pixel) const { return mix64(seed_hash_ ^ pixel); }
@@ -124,18 +132,17 @@ uint64_t Sampler::dimension_hash(uint32_t dimension) const { return mix64(pixel_
 
 float Sampler::next_1d() {
     const uint64_t h = dimension_hash(dimension_++);
-    const uint32_t strata = n_ * n_;
-    const uint32_t stratum = permutation_element(index_, strata, uint32_t(h));
+    const uint32_t stratum = permute(index_, by_strata_.value(), uint32_t(h));
     const float jitter = unit_float(mix64(h ^ index_));
-    return std::min((float(stratum) + jitter) / float(strata), 0x1.fffffep-1f);
+    return std::min(by_strata_.divide(float(stratum) + jitter), 0x1.fffffep-1f);
 }
 
 Vec2 Sampler::next_2d() {
     const uint64_t h = dimension_hash(dimension_++);
-    const uint32_t stratum = permutation_element(index_, n_ * n_, uint32_t(h));
+    const uint32_t stratum = permute(index_, by_strata_.value(), uint32_t(h));
     const uint64_t j = mix64(h ^ index_);
-    const float x = (float(stratum % n_) + unit_float(j)) / float(n_);
-    const float y = (float(stratum / n_) + unit_float(j << 24)) / float(n_);
+    const float x = by_n_.divide(float(by_n_.remainder(stratum)) + unit_float(j));
+    const float y = by_n_.divide(float(by_n_.quotient(stratum)) + unit_float(j << 24));
     return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
 }
 
@@ -156,7 +163,7 @@ void Sampler::next_2d_set(std::span<Vec2> out) {
     for (uint32_t r = 0; r < grid.n; ++r) rows[r] = grid.row(r);
     for (uint32_t s = 0; s < out.size(); ++s) {
         const uint32_t shuffled = grid.shuffled(s);
-        out[s] = grid.point(shuffled, columns[shuffled % grid.m], rows[shuffled / grid.m]);
+        out[s] = grid.point(shuffled, columns[grid.by_m.remainder(shuffled)], rows[grid.by_m.quotient(shuffled)]);
     }
 }
 

@@ -2,6 +2,7 @@
 /// \file The sample generator in every trace: stratified, deterministic per (seed, pixel,
 /// sample index), whatever the thread count or tile order.
 
+#include "glint/math/divisor.h"
 #include "glint/math/vec2.h"
 
 #include <cstdint>
@@ -39,7 +40,7 @@ public:
         stream_next_index_ = index + 1;
         const float ux = float(stream_() >> 8) * 0x1p-24f;
         const float uy = float(stream_() >> 8) * 0x1p-24f;
-        pixel_2d_ = {(float(index % n_) + ux) / float(n_), (float(index / n_) + uy) / float(n_)};
+        pixel_2d_ = {by_n_.divide(float(by_n_.remainder(index)) + ux), by_n_.divide(float(by_n_.quotient(index)) + uy)};
     }
 
     /// Position inside the pixel in [0,1)²: the current sample's jittered n×n cell.
@@ -63,6 +64,8 @@ private:
     /// The seed's part of every hash, and the pixel's: hashed once, not on every draw.
     uint64_t seed_hash_;
     uint32_t n_;
+    /// Division by n and by the n² strata, on every draw.
+    Divisor by_n_, by_strata_;
     uint64_t pixel_hash_;
     uint32_t index_ = 0;
     uint32_t dimension_ = 0;
