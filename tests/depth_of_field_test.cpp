@@ -128,10 +128,10 @@ TEST(SamplingChi2, RegularPolygonAperture) {
             return true;
         };
         const double density = 1.0 / regular_polygon_area(sides);
-        const Chi2Result r =
-            chi2_planar_grid([&](Vec2 u) { return sample_uniform_regular_polygon(u, sides, rotation); },
-                             [&](Vec2 p) { return inside(p) ? density : 0.0; }, {-1.0f, -1.0f}, {1.0f, 1.0f}, 20, 20,
-                             {500'000, 7, 0.01, 3});
+        const UniformRegularPolygon polygon(sides, rotation);
+        const Chi2Result r = chi2_planar_grid([&](Vec2 u) { return polygon.sample(u); },
+                                              [&](Vec2 p) { return inside(p) ? density : 0.0; }, {-1.0f, -1.0f},
+                                              {1.0f, 1.0f}, 20, 20, {500'000, 7, 0.01, 3});
         EXPECT_TRUE(r.passed) << sides << " sides: " << r.report;
     }
 }

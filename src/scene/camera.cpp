@@ -105,6 +105,7 @@ void Camera::set_lens(const ThinLens& lens) {
     if (lens.blades == 1 || lens.blades == 2) throw std::invalid_argument("an aperture has 0 (round) or 3+ blades");
     if (!std::isfinite(lens.rotation)) throw std::invalid_argument("aperture rotation must be finite");
     lens_ = lens;
+    aperture_ = Aperture(lens);
 }
 
 namespace {
@@ -155,7 +156,7 @@ Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 u_lens, f
     // direction has unit length along forward); the lens ray leaves from a point of the
     // aperture and passes there (pbrt-v4's PerspectiveCamera::GenerateRay).
     const Vec3 focus = origin + direction * lens_.focus_distance;
-    const Vec2 a = lens_.sample_aperture(u_lens);
+    const Vec2 a = aperture_.sample(u_lens);
     const Vec3 from = origin + b.right * a.x + b.up * a.y;
     return {from, normalize(focus - from), 0.0f, kInfinity, time};
 }

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace glint {
 
@@ -122,20 +123,42 @@ namespace glint {
     return {b0, b1, 1.0f - b0 - b1};
 }
 
-/// A point uniform over the regular polygon with `sides` (≥ 3) corners on the unit circle,
+/// Points uniform over the regular polygon with `sides` (≥ 3) corners on the unit circle,
 /// the first at angle `rotation` (radians): u.x picks one of the equal wedges (centre, corner
-/// k, corner k+1) and is rescaled, so strata in u.x stay strata; the wedge is then sampled
-/// by `sample_uniform_triangle`. Density 1/`regular_polygon_area(sides)`. A camera's
-/// aperture with blades (bokeh shaped like the diaphragm).
-[[nodiscard]] inline Vec2 sample_uniform_regular_polygon(Vec2 u, uint32_t sides, float rotation) {
-    const float scaled = u.x * float(sides);
-    const uint32_t wedge = std::min(uint32_t(scaled), sides - 1);
-    const float step = 2.0f * kPi / float(sides);
-    const float a0 = rotation + step * float(wedge), a1 = a0 + step;
-    // Barycentrics of (centre, corner k, corner k+1); the centre is the origin.
-    const std::array<float, 3> b = sample_uniform_triangle({scaled - float(wedge), u.y});
-    return {b[1] * std::cos(a0) + b[2] * std::cos(a1), b[1] * std::sin(a0) + b[2] * std::sin(a1)};
-}
+/// k, corner k+1) and is rescaled, so strata in u.x stay strata; the wedge is then sampled by
+/// `sample_uniform_triangle`. Density 1/`regular_polygon_area(sides)`. A camera's aperture
+/// with blades (bokeh shaped like the diaphragm). The corners' cosines and sines are computed
+/// when the polygon is made: per sample they were two sincos, 4 % of a render with depth of
+/// field (docs/performance.md, "Sampler draws without divisions").
+class UniformRegularPolygon {
+public:
+    UniformRegularPolygon(uint32_t sides, float rotation) {
+        const float step = 2.0f * kPi / float(sides);
+        wedges_.reserve(sides);
+        for (uint32_t k = 0; k < sides; ++k) {
+            // Each wedge its own two corners: a0 + step may round apart from the next
+            // wedge's a0 by an ulp, far below any visible seam.
+            const float a0 = rotation + step * float(k), a1 = a0 + step;
+            wedges_.push_back({std::cos(a0), std::sin(a0), std::cos(a1), std::sin(a1)});
+        }
+    }
+
+    [[nodiscard]] Vec2 sample(Vec2 u) const {
+        const auto sides = uint32_t(wedges_.size());
+        const float scaled = u.x * float(sides);
+        const uint32_t k = std::min(uint32_t(scaled), sides - 1);
+        const Wedge& w = wedges_[k];
+        // Barycentrics of (centre, corner k, corner k+1); the centre is the origin.
+        const std::array<float, 3> b = sample_uniform_triangle({scaled - float(k), u.y});
+        return {b[1] * w.cos0 + b[2] * w.cos1, b[1] * w.sin0 + b[2] * w.sin1};
+    }
+
+private:
+    struct Wedge {
+        float cos0, sin0, cos1, sin1;
+    };
+    std::vector<Wedge> wedges_;
+};
 
 /// Area of the regular polygon with `sides` corners on the unit circle: (n/2)·sin(2π/n).
 [[nodiscard]] inline float regular_polygon_area(uint32_t sides) {

@@ -65,7 +65,7 @@ public:
     /// Ray through the film position (x, y) in pixels, (0, 0) = top-left corner of the
     /// image, (width, height) = bottom-right; the aspect ratio is width/height. Directions
     /// are unit length. With a lens, `u_lens` picks the point of the aperture the ray leaves
-    /// from (ThinLens::sample_aperture); a pinhole ignores it. The ray carries `time`, and a
+    /// from (Aperture::sample); a pinhole ignores it. The ray carries `time`, and a
     /// moving camera is where it is then.
     [[nodiscard]] Ray generate_ray(float x, float y, int width, int height, Vec2 u_lens = {}, float time = 0.0f) const;
     /// generate_ray() for each film position at once: rays[k] is the ray through film[k] with
@@ -119,6 +119,8 @@ private:
     float tan_half_fov_ = 0.0f;
     float view_height_ = 2.0f;
     ThinLens lens_;
+    /// The lens's aperture, made with it by set_lens().
+    Aperture aperture_;
 };
 
 }  // namespace glint

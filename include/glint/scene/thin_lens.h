@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 namespace glint {
 
@@ -37,14 +38,30 @@ struct ThinLens {
     float rotation = 0.0f;
 
     [[nodiscard]] bool is_pinhole() const { return !(aperture_radius > 0.0f); }
+};
 
-    /// A point of the aperture in world units, (right, up) in the lens plane, uniform over its
-    /// area: stratified `u` give stratified points (concentric disk map; polygon wedges).
-    [[nodiscard]] Vec2 sample_aperture(Vec2 u) const {
-        const Vec2 p = blades == 0 ? sample_uniform_disk_concentric(u)
-                                   : sample_uniform_regular_polygon(u, blades, radians(rotation));
-        return p * aperture_radius;
+/// The points a thin lens's rays leave from, uniform over its aperture's area, in world
+/// units, (right, up) in the lens plane: stratified `u` give stratified points (concentric
+/// disk map; polygon wedges). Made from a ThinLens, whose blades it turns into their
+/// corners once.
+class Aperture {
+public:
+    /// A pinhole's: every point is the centre.
+    Aperture() = default;
+    explicit Aperture(const ThinLens& lens)
+        : radius_(lens.is_pinhole() ? 0.0f : lens.aperture_radius),
+          polygon_(lens.blades == 0 ? std::nullopt
+                                    : std::optional(UniformRegularPolygon(lens.blades, radians(lens.rotation)))) {}
+
+    [[nodiscard]] Vec2 sample(Vec2 u) const {
+        const Vec2 p = polygon_ ? polygon_->sample(u) : sample_uniform_disk_concentric(u);
+        return p * radius_;
     }
+
+private:
+    float radius_ = 0.0f;
+    /// The blades' polygon; none for a round aperture.
+    std::optional<UniformRegularPolygon> polygon_;
 };
 
 }  // namespace glint
