@@ -238,6 +238,40 @@ TEST(GlossyLobes, SampleWeightIsEvalTimesCosineOverPdf) {
     EXPECT_GT(transmitted, 100);
 }
 
+TEST(GlossyLobes, EvalPartsSplitOffTheGlossyShare) {
+    // The Whitted integrator weighs eval_parts' glossy share against its glossy samples: it
+    // must be eval_glossy bit for bit, on both sides, and nothing for a material without it.
+    Material mixed = rough_metal(0.35f, Color(0.8f, 0.5f, 0.2f), true);
+    mixed.diffuse = Color(0.3f);
+    mixed.transparency = 0.4f;
+    Material matte;
+    matte.diffuse = Color(0.5f);
+    const Vec3 wo = from_polar(35.0f, 60.0f);
+    int above = 0, below = 0;
+    for (const Interface media : {Interface{1.0f, 1.5f}, Interface{1.5f, 1.0f}}) {
+        const Bsdf bsdf = bsdf_of(mixed, kUp, kUp, wo, media);
+        const Bsdf plain = bsdf_of(matte, kUp, kUp, wo, media);
+        for (int i = 0; i < 36; ++i)
+            for (int j = 0; j < 12; ++j) {
+                const Vec3 wi = from_polar(2.5f + 5.0f * float(i), 30.0f * float(j));
+                const Bsdf::EvalParts parts = bsdf.eval_parts(wi);
+                const Color glossy = bsdf.eval_glossy(wi);
+                for (int c = 0; c < 3; ++c) EXPECT_EQ(parts.glossy[c], glossy[c]) << wi;
+                if (wi.z < 0.0f) {
+                    for (int c = 0; c < 3; ++c) EXPECT_EQ(parts.all[c], glossy[c]) << wi;
+                    below += glossy.is_black() ? 0 : 1;
+                } else {
+                    // The rest is the Lambert lobe, its diffuse weighted by 1 − transparency.
+                    EXPECT_NEAR(parts.all.r - parts.glossy.r, 0.3f * (1.0f - 0.4f) * kInvPi, 1e-5f) << wi;
+                    above += glossy.is_black() ? 0 : 1;
+                }
+                EXPECT_TRUE(plain.eval_parts(wi).glossy.is_black());
+            }
+    }
+    EXPECT_GT(above, 100);
+    EXPECT_GT(below, 100);
+}
+
 TEST(GlossyFurnace, WhiteRoughConductorReflectsAtMostEverything) {
     // F = 1 and no other lobe: the directional albedo ∫ f cos θi dωi is what masking leaves,
     // at most 1, and close to 1 for a smooth surface. Estimated by importance sampling with

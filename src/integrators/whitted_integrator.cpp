@@ -152,13 +152,16 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
             if constexpr (Record) context.tree->add_shadow_ray(node, shadow(), light, true, Color());
             return;
         }
-        Color f = bsdf.eval(ls.direction);
+        Color f;
         if (glossy_count > 0 && !ls.is_delta) {
             // The glossy samples traced from here can find this light too: the glossy part of f
             // takes the light sample's MIS weight, their emission the rest.
+            const Bsdf::EvalParts parts = bsdf.eval_parts(ls.direction);
             const float w =
                 power_heuristic(float(light_samples_) * ls.pdf, float(glossy_count) * bsdf.glossy_pdf(ls.direction));
-            f = f - bsdf.eval_glossy(ls.direction) * (1.0f - w);
+            f = parts.all - parts.glossy * (1.0f - w);
+        } else {
+            f = bsdf.eval(ls.direction);
         }
         const Color c = f * ls.radiance * (std::abs(dot(bsdf.normal(), ls.direction)) * weight / ls.pdf);
         // The tree records what the sum gained, not c: recording c would give its product a

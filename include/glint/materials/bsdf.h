@@ -144,12 +144,21 @@ public:
     /// Sum of the smooth and glossy lobes' f(wo, wi). Zero for wi under the shading or true
     /// surface but for a rough dielectric's transmission (under both). Inline: the Whitted
     /// integrator calls it for every light at every hit.
-    [[nodiscard]] Color eval(const Vec3& wi) const {
+    [[nodiscard]] Color eval(const Vec3& wi) const { return eval_parts(wi).all; }
+    /// eval(wi), and the glossy lobes' share of it (eval_glossy(wi)), evaluated once: the
+    /// Whitted integrator weighs that share of a light sample against its glossy samples.
+    struct EvalParts {
+        Color all, glossy;
+    };
+    [[nodiscard]] EvalParts eval_parts(const Vec3& wi) const {
         // Reflection on the viewer's side of both the shading and the true surface.
         const float cn = dot(n_, wi), cg = dot(ng_, wi);
         if (cn <= 0.0f || cg <= 0.0f) {
-            if (transmits() && cn < 0.0f && cg < 0.0f) return eval_glossy(wi);
-            return Color();
+            if (transmits() && cn < 0.0f && cg < 0.0f) {
+                const Color glossy = eval_glossy(wi);
+                return {glossy, glossy};
+            }
+            return {};
         }
         Color f = diffuse_ * kInvPi;
         const Vec3 half = wi + wo_;
@@ -158,8 +167,12 @@ public:
             const Vec3 h = normalize(half);
             f += highlight_ * (std::pow(std::max(dot(n_, h), 0.0f), shininess_) * kInvPi);
         }
-        if (glossy_) f += eval_glossy(wi);
-        return f;
+        Color glossy;
+        if (glossy_) {
+            glossy = eval_glossy(wi);
+            f += glossy;
+        }
+        return {f, glossy};
     }
     /// Solid-angle density with which sample() returns wi through a smooth or glossy lobe.
     [[nodiscard]] float pdf(const Vec3& wi) const;
