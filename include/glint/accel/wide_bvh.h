@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #if defined(__AVX2__)
@@ -87,7 +88,10 @@ public:
     /// traversal visits children front to back (in the order precomputed for the ray's
     /// octant) and skips subtrees behind ray.tmax; with AnyHit it stops at the first hit and
     /// takes a node's lowest hit slot first, then the others from the highest down (the
-    /// collapse puts leaves in the low slots). Returns whether anything was hit.
+    /// collapse puts leaves in the low slots). Returns whether anything was hit. An any-hit
+    /// callback that also takes `(uint32_t leaf, uint32_t other_leaf, Ray& ray) -> bool` gets
+    /// a node's two lowest hit slots in one call when both are leaves (a mesh tests their
+    /// triangles in one pass: docs/performance.md, "Two leaves in one test").
     template <bool AnyHit, typename IntersectLeaf, typename Count = NoTraversalCount>
     bool traverse(Ray& ray, IntersectLeaf&& intersect_leaf, const Count& count = {}) const;
 
@@ -306,11 +310,14 @@ template <bool AnyHit, typename IntersectLeaf, typename Count>
 
 template <typename IntersectLeaf, typename Count>
 bool WideBvh::traverse_any_hit(Ray& ray, IntersectLeaf& intersect_leaf, const Count& count) const {
+    constexpr bool kTakesPairs = std::is_invocable_r_v<bool, IntersectLeaf&, uint32_t, uint32_t, Ray&>;
     const WideRay r(ray);
     const WideNode* const nodes = nodes_.data();
     uint32_t stack[kWideStackSize];
     int top = 0;
     uint32_t ref = 0;
+    // The second of two hit leaves handed on with `ref`, or 0 (no leaf reference is 0).
+    uint32_t paired = 0;
     for (;;) {
         while (!(ref & WideNode::kLeafBit)) {
             const WideNode& node = nodes[ref];
@@ -323,7 +330,16 @@ bool WideBvh::traverse_any_hit(Ray& ray, IntersectLeaf& intersect_leaf, const Co
                 ref = stack[--top];
                 continue;
             }
-            const uint32_t others = mask & (mask - 1);
+            uint32_t others = mask & (mask - 1);
+            ref = node.child[std::countr_zero(mask)];
+            if constexpr (kTakesPairs) {
+                // The two lowest hit slots both leaves: one call tests them together.
+                if ((ref & WideNode::kLeafBit) && others &&
+                    (node.child[std::countr_zero(others)] & WideNode::kLeafBit)) {
+                    paired = node.child[std::countr_zero(others)];
+                    others &= others - 1;
+                }
+            }
 #if defined(__AVX512VL__)
             if ((others & (others - 1)) == 0) {
                 // None or one more (the common cases): a plain store.
@@ -340,9 +356,17 @@ bool WideBvh::traverse_any_hit(Ray& ray, IntersectLeaf& intersect_leaf, const Co
 #else
             for (uint32_t m = others; m; m &= m - 1) stack[top++] = node.child[std::countr_zero(m)];
 #endif
-            ref = node.child[std::countr_zero(mask)];
         }
-        if (intersect_leaf(ref & ~WideNode::kLeafBit, ray)) return true;
+        if constexpr (kTakesPairs) {
+            if (paired != 0) {
+                if (intersect_leaf(ref & ~WideNode::kLeafBit, paired & ~WideNode::kLeafBit, ray)) return true;
+                paired = 0;
+            } else if (intersect_leaf(ref & ~WideNode::kLeafBit, ray)) {
+                return true;
+            }
+        } else if (intersect_leaf(ref & ~WideNode::kLeafBit, ray)) {
+            return true;
+        }
         if (top == 0) return false;
         ref = stack[--top];
     }
