@@ -32,7 +32,7 @@ inline __m128 opaque_float(__m128 x) {
     return x;
 }
 #if defined(__AVX__)
-/// The same for eight lanes (the packet test, triangle_bvh_packet.cpp).
+/// The same for eight lanes (the two-block test; the packet test, triangle_bvh_packet.cpp).
 inline __m256 opaque_float(__m256 x) {
     __asm__("" : "+x"(x));
     return x;
@@ -118,7 +118,7 @@ struct EightLanes {
 };
 #endif
 
-/// The watertight test's per-ray constants broadcast to V's lanes. It keeps no copy of the
+/// The watertight test's per-ray constants broadcast to L's lanes. It keeps no copy of the
 /// ray: its caller has just written the ray field by field, and the copy read it back 32
 /// bytes at once, a load the CPU cannot take from those stores and waits on; in half the runs
 /// of `glint-bench` (as the program's addresses fell) the bunny's camera rays then traced at

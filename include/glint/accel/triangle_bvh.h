@@ -1,7 +1,9 @@
 #pragma once
 /// \file The bottom-level structure of a triangle mesh: an 8-wide BVH whose leaves hold up
 /// to four triangles (one block), copied in leaf order and tested together with SSE
-/// (x86-64; other targets test them one by one with the scalar watertight test).
+/// (x86-64; other targets test them one by one with the scalar watertight test), or two
+/// blocks' eight with AVX where an any-hit ray meets both leaves in one node
+/// (accel/triangle_block_test.h).
 ///
 /// One block per leaf was measured on the shared meshes: leaves of two or four blocks save
 /// 10% memory but cost up to 15% on incoherent rays.
