@@ -110,8 +110,18 @@ TEST(ThinLens, RejectsANegativeApertureAndFocus) {
     Camera camera;
     EXPECT_THROW(camera.set_lens({.aperture_radius = -0.1f}), std::invalid_argument);
     EXPECT_THROW(camera.set_lens({.aperture_radius = 0.1f, .focus_distance = 0.0f}), std::invalid_argument);
-    EXPECT_THROW(camera.set_lens({.aperture_radius = 0.1f, .focus_distance = 1.0f, .blades = 2}),
-                 std::invalid_argument);
+}
+
+TEST(ThinLens, TakesNoBladesOrThreeToTheMost) {
+    // The aperture keeps a table of its corners: a count without bound would be memory
+    // without bound.
+    Camera camera;
+    for (const uint32_t blades : {1u, 2u, ThinLens::kMaxBlades + 1, 1000000000u})
+        EXPECT_THROW(camera.set_lens({.aperture_radius = 0.1f, .focus_distance = 1.0f, .blades = blades}),
+                     std::invalid_argument)
+            << blades;
+    for (const uint32_t blades : {0u, 3u, ThinLens::kMaxBlades})
+        EXPECT_NO_THROW(camera.set_lens({.aperture_radius = 0.1f, .focus_distance = 1.0f, .blades = blades})) << blades;
 }
 
 TEST(SamplingChi2, RegularPolygonAperture) {

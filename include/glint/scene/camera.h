@@ -37,7 +37,7 @@ public:
 
     /// Give the camera a lens: depth of field (scene/thin_lens.h). Throws
     /// std::invalid_argument for a negative or non-finite aperture, a focus distance that is
-    /// not positive, or 1 or 2 blades.
+    /// not positive, or 1, 2 or more than ThinLens::kMaxBlades blades.
     void set_lens(const ThinLens& lens);
     [[nodiscard]] const ThinLens& lens() const { return lens_; }
 

@@ -30,9 +30,12 @@ struct ThinLens {
     /// Distance from the eye to the plane of focus, along the view direction, world units.
     /// A camera's starts at the distance to its look-at point.
     float focus_distance = 1.0f;
-    /// Number of diaphragm blades: 0 for a round aperture, else 3 or more (a regular
+    /// Number of diaphragm blades: 0 for a round aperture, else 3 to kMaxBlades (a regular
     /// polygon whose corners lie on the aperture's circle).
     uint32_t blades = 0;
+    /// Beyond this many blades the polygon is a circle to the eye; the aperture keeps a
+    /// table of its corners.
+    static constexpr uint32_t kMaxBlades = 64;
     /// Turn of the polygon in degrees (its first corner at this angle from the camera's
     /// right axis, counter-clockwise as seen from behind the camera).
     float rotation = 0.0f;
