@@ -78,37 +78,33 @@ float hashed_float(uint32_t i, uint32_t p) {
 /// an m×n grid, the samples, the grid's columns and its rows each shuffled by their own
 /// permutation of `pattern`.
 struct MultiJitterGrid {
-    uint32_t count, m, n, pattern;
-    /// The three divisions of every point (for the usual sets of 4, 16 or 64 points, powers
-    /// of two: shifts and products).
-    Divisor by_count, by_m, by_n;
+    /// The set's size and the grid's sides, each a divisor of every point (for the usual
+    /// sets of 4, 16 or 64 points, powers of two: shifts and products).
+    Divisor count, m, n;
+    uint32_t pattern;
     MultiJitterGrid(uint32_t count_, uint32_t pattern_)
-        : count(count_),
-          m(static_cast<uint32_t>(std::sqrt(double(count_)))),
-          n((count_ + m - 1) / m),
-          pattern(pattern_),
-          by_count(count),
-          by_m(m),
-          by_n(n) {}
+        : count(count_), m(side(count_)), n((count_ + m.value() - 1) / m.value()), pattern(pattern_) {}
+    /// m = ⌊√count⌋.
+    static uint32_t side(uint32_t count) { return static_cast<uint32_t>(std::sqrt(double(count))); }
     /// Where sample s goes: its shuffled index, whose column is its index mod m and whose
     /// row its index / m.
-    [[nodiscard]] uint32_t shuffled(uint32_t s) const { return permute(s, count, pattern * 0x51633e2du); }
+    [[nodiscard]] uint32_t shuffled(uint32_t s) const { return permute(s, count.value(), pattern * 0x51633e2du); }
     /// Where column c and row r go.
-    [[nodiscard]] uint32_t column(uint32_t c) const { return permute(c, m, pattern * 0x68bc21ebu); }
-    [[nodiscard]] uint32_t row(uint32_t r) const { return permute(r, n, pattern * 0x02e5be93u); }
+    [[nodiscard]] uint32_t column(uint32_t c) const { return permute(c, m.value(), pattern * 0x68bc21ebu); }
+    [[nodiscard]] uint32_t row(uint32_t r) const { return permute(r, n.value(), pattern * 0x02e5be93u); }
     /// The point of shuffled sample s in column sx and row sy.
     [[nodiscard]] Vec2 point(uint32_t s, uint32_t sx, uint32_t sy) const {
         const float jx = hashed_float(s, pattern * 0x967a889bu);
         const float jy = hashed_float(s, pattern * 0x368cc8b7u);
-        const float x = by_m.divide(float(sx) + by_n.divide(float(sy) + jx));
-        const float y = by_count.divide(float(s) + jy);
+        const float x = m.divide(float(sx) + n.divide(float(sy) + jx));
+        const float y = count.divide(float(s) + jy);
         // Rounding can land exactly on 1 for the last stratum; keep the half-open interval.
         return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
     }
     /// Sample s, its column and row permuted on the spot.
     [[nodiscard]] Vec2 sample(uint32_t s) const {
         const uint32_t i = shuffled(s);
-        return point(i, column(by_m.remainder(i)), row(by_m.quotient(i)));
+        return point(i, column(m.remainder(i)), row(m.quotient(i)));
     }
 };
 
@@ -121,9 +117,8 @@ Vec2 correlated_multi_jitter(uint32_t s, uint32_t count, uint32_t p) { return Mu
 Sampler::Sampler(uint64_t seed, uint32_t samples_per_axis)
     : seed_(seed),
       seed_hash_(mix64(seed ^ 0x9e3779b97f4a7c15ull)),
-      n_(samples_per_axis < 1 ? 1 : samples_per_axis),
-      by_n_(n_),
-      by_strata_(n_ * n_),
+      by_n_(samples_per_axis < 1 ? 1 : samples_per_axis),
+      by_strata_(by_n_.value() * by_n_.value()),
       pixel_hash_(hash_pixel(0)) {}
 
 uint64_t Sampler::hash_pixel(uint64_t pixel) const { return mix64(seed_hash_ ^ pixel); }
@@ -154,16 +149,16 @@ void Sampler::next_2d_set(std::span<Vec2> out) {
     // correlated_multi_jitter for each sample, with the permutations of the grid's m columns
     // and n rows taken once for the set, not once per sample (for grids of up to 64 × 64).
     constexpr uint32_t kMaxSide = 64;
-    if (grid.m > kMaxSide || grid.n > kMaxSide) {
+    if (grid.m.value() > kMaxSide || grid.n.value() > kMaxSide) {
         for (uint32_t s = 0; s < out.size(); ++s) out[s] = grid.sample(s);
         return;
     }
     std::array<uint32_t, kMaxSide> columns, rows;
-    for (uint32_t c = 0; c < grid.m; ++c) columns[c] = grid.column(c);
-    for (uint32_t r = 0; r < grid.n; ++r) rows[r] = grid.row(r);
+    for (uint32_t c = 0; c < grid.m.value(); ++c) columns[c] = grid.column(c);
+    for (uint32_t r = 0; r < grid.n.value(); ++r) rows[r] = grid.row(r);
     for (uint32_t s = 0; s < out.size(); ++s) {
         const uint32_t shuffled = grid.shuffled(s);
-        out[s] = grid.point(shuffled, columns[grid.by_m.remainder(shuffled)], rows[grid.by_m.quotient(shuffled)]);
+        out[s] = grid.point(shuffled, columns[grid.m.remainder(shuffled)], rows[grid.m.quotient(shuffled)]);
     }
 }
 

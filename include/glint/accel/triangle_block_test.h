@@ -128,8 +128,10 @@ template <typename L>
 struct LaneRay {
     WatertightRay w;
     typename L::V ox, oy, oz, sx, sy, sz;
-    explicit LaneRay(const Ray& ray)
-        : w(ray.direction),
+    explicit LaneRay(const Ray& ray) : LaneRay(ray, WatertightRay(ray.direction)) {}
+    /// For a ray whose watertight constants are known (another width's LaneRay has them).
+    LaneRay(const Ray& ray, const WatertightRay& w_)
+        : w(w_),
           ox(L::splat(ray.origin[w.kx])),
           oy(L::splat(ray.origin[w.ky])),
           oz(L::splat(ray.origin[w.kz])),

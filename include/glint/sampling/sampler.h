@@ -53,7 +53,7 @@ public:
     /// (correlated multi-jittered: Kensler 2013), for N light samples at one shading point.
     void next_2d_set(std::span<Vec2> out);
 
-    [[nodiscard]] uint32_t samples_per_axis() const { return n_; }
+    [[nodiscard]] uint32_t samples_per_axis() const { return by_n_.value(); }
 
 private:
     /// The hash of (seed, pixel) that every dimension's hash starts from.
@@ -63,8 +63,7 @@ private:
     uint64_t seed_;
     /// The seed's part of every hash, and the pixel's: hashed once, not on every draw.
     uint64_t seed_hash_;
-    uint32_t n_;
-    /// Division by n and by the n² strata, on every draw.
+    /// n, and the n² strata: each divides every draw.
     Divisor by_n_, by_strata_;
     uint64_t pixel_hash_;
     uint32_t index_ = 0;

@@ -52,7 +52,7 @@ public:
     /// A pinhole's: every point is the centre.
     Aperture() = default;
     explicit Aperture(const ThinLens& lens)
-        : radius_(lens.is_pinhole() ? 0.0f : lens.aperture_radius),
+        : radius_(lens.aperture_radius),
           polygon_(lens.blades == 0 ? std::nullopt
                                     : std::optional(UniformRegularPolygon(lens.blades, radians(lens.rotation)))) {}
 
