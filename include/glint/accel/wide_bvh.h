@@ -17,7 +17,9 @@
 #include "glint/math/ray.h"
 #include "glint/util/uninitialized_allocator.h"
 
+#include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -148,6 +150,7 @@ void WideBvh::encode_leaves(LeafPayload&& leaf_payload) {
 }
 
 inline WideRay::WideRay(const Ray& ray) {
+    assert(ray.tmin >= 0.0f);  // the slab test's integer order (distance_order) relies on it
     for (int a = 0; a < 3; ++a) {
         // Tiny components become ±1e-30 so that the reciprocal stays finite and
         // (plane - origin) · inv_dir is never 0 · inf.
@@ -160,25 +163,43 @@ inline WideRay::WideRay(const Ray& ray) {
     order_shift = 3 * ((near_plane[0] & 1) | (near_plane[1] & 1) << 1 | (near_plane[2] & 1) << 2);
 }
 
-/// Boxes are entered up to tmax·(1 + 2^-21) so that rounding in the slab test never culls
-/// a box a watertight triangle test would hit (Woop, Benthin, Wald 2013, §3.3: robust BVH
-/// traversal needs conservative box tests).
-inline constexpr float kWideBoxSlack = 1.0f + 0x1p-21f;
+/// A box counts as entered when the ray enters it at most kWideBoxSlackUlps units in the last
+/// place after it leaves, so that rounding in the slab test never culls a box that a
+/// watertight triangle test would hit (Woop, Benthin, Wald 2013, §3.3: robust BVH traversal
+/// needs conservative box tests). Eight ulps are a relative margin of 2^-21 to 2^-20.
+inline constexpr int32_t kWideBoxSlackUlps = 8;
+/// A factor that widens a float by at least those eight ulps, for bounds kept as floats (the
+/// packet frustum's tmax).
+inline constexpr float kWideBoxSlackFactor = 1.0f + 0x1p-20f;
+
+/// The slab tests take the maximum, minimum and comparison of distances on their bit patterns
+/// as signed integers (Embree's single-ray kernels do the same): one cycle each where the
+/// float operations take two to four, on the chain from a node's load to the next node's
+/// address. Those integers order non-negative floats as the floats are ordered and put every
+/// negative float below them, so with tmin >= 0 (Ray) the entry distance is the float maximum,
+/// the test decides like the float test, and a box the ray leaves before t = 0 is missed,
+/// as it is in floats. Distances are never NaN (WideRay keeps the reciprocals finite).
+[[nodiscard]] inline int32_t distance_order(float t) { return std::bit_cast<int32_t>(t); }
 
 #if defined(__AVX2__)
 /// The eight slab tests: the lanes whose boxes the ray enters within [tmin, tmax], and
 /// (in `enter`) where it enters each box.
 inline __m256 wide_slab_test(const WideNode& node, const WideRay& r, float tmin, float tmax, __m256& enter) {
     auto plane_t = [&](int axis, uint32_t plane) {
-        return _mm256_fmsub_ps(_mm256_load_ps(node.planes[plane]), _mm256_set1_ps(r.inv_dir[axis]),
-                               _mm256_set1_ps(r.origin_inv_dir[axis]));
+        return _mm256_castps_si256(_mm256_fmsub_ps(_mm256_load_ps(node.planes[plane]), _mm256_set1_ps(r.inv_dir[axis]),
+                                                   _mm256_set1_ps(r.origin_inv_dir[axis])));
     };
-    const __m256 near_x = plane_t(0, r.near_plane[0]), far_x = plane_t(0, r.near_plane[0] ^ 1);
-    const __m256 near_y = plane_t(1, r.near_plane[1]), far_y = plane_t(1, r.near_plane[1] ^ 1);
-    const __m256 near_z = plane_t(2, r.near_plane[2]), far_z = plane_t(2, r.near_plane[2] ^ 1);
-    enter = _mm256_max_ps(_mm256_max_ps(near_x, near_y), _mm256_max_ps(near_z, _mm256_set1_ps(tmin)));
-    const __m256 exit = _mm256_min_ps(_mm256_min_ps(far_x, far_y), _mm256_min_ps(far_z, _mm256_set1_ps(tmax)));
-    return _mm256_cmp_ps(enter, _mm256_mul_ps(exit, _mm256_set1_ps(kWideBoxSlack)), _CMP_LE_OQ);
+    const __m256i near_x = plane_t(0, r.near_plane[0]), far_x = plane_t(0, r.near_plane[0] ^ 1);
+    const __m256i near_y = plane_t(1, r.near_plane[1]), far_y = plane_t(1, r.near_plane[1] ^ 1);
+    const __m256i near_z = plane_t(2, r.near_plane[2]), far_z = plane_t(2, r.near_plane[2] ^ 1);
+    const __m256i enter_order = _mm256_max_epi32(_mm256_max_epi32(near_x, near_y),
+                                                 _mm256_max_epi32(near_z, _mm256_set1_epi32(distance_order(tmin))));
+    const __m256i exit_order = _mm256_min_epi32(_mm256_min_epi32(far_x, far_y),
+                                                _mm256_min_epi32(far_z, _mm256_set1_epi32(distance_order(tmax))));
+    enter = _mm256_castsi256_ps(enter_order);
+    // enter <= exit + slack, as exit + slack + 1 > enter.
+    return _mm256_castsi256_ps(
+        _mm256_cmpgt_epi32(_mm256_add_epi32(exit_order, _mm256_set1_epi32(kWideBoxSlackUlps + 1)), enter_order));
 }
 #endif
 
@@ -193,15 +214,15 @@ inline uint32_t WideBvh::intersect_node(const WideNode& node, const WideRay& r, 
 #else
     uint32_t mask = 0;
     for (uint32_t i = 0; i < WideNode::kWidth; ++i) {
-        float enter = tmin, exit = tmax;
+        int32_t enter = distance_order(tmin), exit = distance_order(tmax);
         for (int a = 0; a < 3; ++a) {
             const float t_near = node.planes[r.near_plane[a]][i] * r.inv_dir[a] - r.origin_inv_dir[a];
             const float t_far = node.planes[r.near_plane[a] ^ 1][i] * r.inv_dir[a] - r.origin_inv_dir[a];
-            enter = t_near > enter ? t_near : enter;
-            exit = t_far < exit ? t_far : exit;
+            enter = std::max(enter, distance_order(t_near));
+            exit = std::min(exit, distance_order(t_far));
         }
-        if constexpr (StoreEnter) t_enter[i] = enter;
-        if (enter <= exit * kWideBoxSlack) mask |= 1u << i;
+        if constexpr (StoreEnter) t_enter[i] = std::bit_cast<float>(enter);
+        if (enter <= exit + kWideBoxSlackUlps) mask |= 1u << i;
     }
     return mask;
 #endif

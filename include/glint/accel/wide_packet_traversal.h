@@ -126,7 +126,7 @@ uint32_t traverse_packet_frustum(std::span<const WideNode> nodes, RayPacket& pac
         while (!(ref & WideNode::kLeafBit)) {
             const WideNode& node = nodes[ref];
             __m256 enter;
-            const __m256 hit = frustum.test(node, _mm256_set1_ps(tmax_bound * kWideBoxSlack), enter);
+            const __m256 hit = frustum.test(node, _mm256_set1_ps(tmax_bound * kWideBoxSlackFactor), enter);
             // Closest hits take the children near to far by the octant's order; any-hit
             // packets, like single any-hit rays, fare better in slot order (leaves first).
             __m256 hit_ordered = hit, enter_ordered = enter;

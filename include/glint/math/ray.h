@@ -10,6 +10,7 @@ struct Ray {
     Vec3 origin;
     /// Not necessarily unit length: a ray carried into an object's space keeps its t.
     Vec3 direction;
+    /// At least 0: a ray starts at its origin (the BVH's box test relies on it).
     float tmin = 0.0f;
     /// Closest-hit queries shrink tmax as they find closer hits.
     float tmax = kInfinity;
