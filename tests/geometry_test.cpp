@@ -124,6 +124,30 @@ bool intersect_triangle(const Ray& ray, const Vec3& v0, const Vec3& v1, const Ve
 
 }  // namespace
 
+TEST(Triangle, WatertightRayShearsAlongTheLargestAxisKeepingTheWinding) {
+    // Directions along, between and across the axes with both signs, ties included.
+    const float values[] = {-2.0f, -1.0f, -0.5f, 0.0f, 0.5f, 1.0f, 2.0f};
+    int checked = 0;
+    for (const float x : values)
+        for (const float y : values)
+            for (const float z : values) {
+                const Vec3 d(x, y, z);
+                if (d == Vec3(0.0f)) continue;
+                const WatertightRay w(d);
+                EXPECT_EQ(w.kz, max_axis(abs(d))) << d;  // the largest |component|, max_axis's ties
+                // (kx, ky, kz) is a cyclic order of the axes when d[kz] > 0 (an even
+                // permutation), the reversed one when d[kz] < 0.
+                const bool cyclic = w.kx == (w.kz + 1) % 3 && w.ky == (w.kz + 2) % 3;
+                const bool reversed = w.kx == (w.kz + 2) % 3 && w.ky == (w.kz + 1) % 3;
+                EXPECT_TRUE(d[w.kz] > 0.0f ? cyclic : reversed) << d;
+                EXPECT_EQ(w.sz, 1.0f / d[w.kz]) << d;
+                EXPECT_EQ(w.sx, d[w.kx] * w.sz) << d;
+                EXPECT_EQ(w.sy, d[w.ky] * w.sz) << d;
+                ++checked;
+            }
+    EXPECT_EQ(checked, 7 * 7 * 7 - 1);
+}
+
 TEST(Triangle, HitGivesTAndBarycentrics) {
     const Vec3 v0(0, 0, 0), v1(1, 0, 0), v2(0, 1, 0);
     TriangleHit th;

@@ -10,6 +10,7 @@
 #include <immintrin.h>
 #endif
 
+#include <array>
 #include <cstdint>
 
 namespace glint {
@@ -130,11 +131,16 @@ struct LaneRay {
     typename L::V ox, oy, oz, sx, sy, sz;
     explicit LaneRay(const Ray& ray) : LaneRay(ray, WatertightRay(ray.direction)) {}
     /// For a ray whose watertight constants are known (another width's LaneRay has them).
+    /// The origin's components are read one by one and picked by index, as WatertightRay picks
+    /// the direction's.
     LaneRay(const Ray& ray, const WatertightRay& w_)
+        : LaneRay(w_, {glint::opaque_float(ray.origin.x), glint::opaque_float(ray.origin.y),
+                       glint::opaque_float(ray.origin.z)}) {}
+    LaneRay(const WatertightRay& w_, const std::array<float, 3>& origin)
         : w(w_),
-          ox(L::splat(ray.origin[w.kx])),
-          oy(L::splat(ray.origin[w.ky])),
-          oz(L::splat(ray.origin[w.kz])),
+          ox(L::splat(origin[w.kx])),
+          oy(L::splat(origin[w.ky])),
+          oz(L::splat(origin[w.kz])),
           sx(L::splat(w.sx)),
           sy(L::splat(w.sy)),
           sz(L::splat(w.sz)) {}
