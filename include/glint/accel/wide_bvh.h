@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -150,7 +149,6 @@ void WideBvh::encode_leaves(LeafPayload&& leaf_payload) {
 }
 
 inline WideRay::WideRay(const Ray& ray) {
-    assert(ray.tmin >= 0.0f);  // the slab test's integer order (distance_order) relies on it
     for (int a = 0; a < 3; ++a) {
         // Tiny components become ±1e-30 so that the reciprocal stays finite and
         // (plane - origin) · inv_dir is never 0 · inf.

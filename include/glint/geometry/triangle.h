@@ -5,7 +5,6 @@
 #include "glint/math/vec3.h"
 
 #include <cmath>
-#include <utility>
 
 namespace glint {
 
