@@ -103,7 +103,7 @@ void Camera::set_lens(const ThinLens& lens) {
         throw std::invalid_argument("aperture radius must be zero or positive");
     if (!(lens.focus_distance > 0.0f && std::isfinite(lens.focus_distance)))
         throw std::invalid_argument("focus distance must be positive");
-    if (lens.blades == 1 || lens.blades == 2 || lens.blades > ThinLens::kMaxBlades)
+    if (!ThinLens::blades_allowed(lens.blades))
         throw std::invalid_argument(fmt::format("an aperture has 0 (round) or 3 to {} blades", ThinLens::kMaxBlades));
     if (!std::isfinite(lens.rotation)) throw std::invalid_argument("aperture rotation must be finite");
     lens_ = lens;

@@ -151,7 +151,7 @@ ThinLens read_lens(const ParamTable& t, float vertical_fov, float look_at_distan
         if (!(lens.focus_distance > 0.0f)) t.fail("focus_distance", "a positive distance in world units");
     }
     lens.blades = count(t, "aperture_blades", 0, 0, ThinLens::kMaxBlades);
-    if (lens.blades == 1 || lens.blades == 2)
+    if (!ThinLens::blades_allowed(lens.blades))
         t.fail("aperture_blades", fmt::format("0 for a round aperture, or 3 to {} blades", ThinLens::kMaxBlades));
     lens.rotation = t.number("aperture_rotation", 0.0f);
     return lens;

@@ -36,6 +36,8 @@ struct ThinLens {
     /// Beyond this many blades the polygon is a circle to the eye; the aperture keeps a
     /// table of its corners.
     static constexpr uint32_t kMaxBlades = 64;
+    /// Whether a lens may have `n` blades: 0 (round), or 3 to kMaxBlades.
+    [[nodiscard]] static constexpr bool blades_allowed(uint32_t n) { return n == 0 || (n >= 3 && n <= kMaxBlades); }
     /// Turn of the polygon in degrees (its first corner at this angle from the camera's
     /// right axis, counter-clockwise as seen from behind the camera).
     float rotation = 0.0f;
