@@ -84,14 +84,13 @@ inline __m256 packet_slab_test(const WideNode& node, uint32_t slot, const Packet
         const __m256 plane = near ? _mm256_blendv_ps(lo, hi, r.negative[axis]) : _mm256_blendv_ps(hi, lo, r.negative[axis]);
         return _mm256_fmsub_ps(plane, r.inv_dir[axis], r.origin_inv_dir[axis]);
     };
-    auto order = [](__m256 t) { return _mm256_castps_si256(t); };
-    const __m256i enter = _mm256_max_epi32(_mm256_max_epi32(order(plane_t(0, true)), order(plane_t(1, true))),
-                                           _mm256_max_epi32(order(plane_t(2, true)), order(r.tmin)));
-    const __m256i exit = _mm256_min_epi32(_mm256_min_epi32(order(plane_t(0, false)), order(plane_t(1, false))),
-                                          _mm256_min_epi32(order(plane_t(2, false)), order(tmax)));
-    const __m256 entered = _mm256_castsi256_ps(
-        _mm256_cmpgt_epi32(_mm256_add_epi32(exit, _mm256_set1_epi32(kWideBoxSlackUlps + 1)), enter));
-    const __m256 hit = _mm256_and_ps(entered, lanes);
+    const __m256i enter =
+        _mm256_max_epi32(_mm256_max_epi32(distance_order(plane_t(0, true)), distance_order(plane_t(1, true))),
+                         _mm256_max_epi32(distance_order(plane_t(2, true)), distance_order(r.tmin)));
+    const __m256i exit =
+        _mm256_min_epi32(_mm256_min_epi32(distance_order(plane_t(0, false)), distance_order(plane_t(1, false))),
+                         _mm256_min_epi32(distance_order(plane_t(2, false)), distance_order(tmax)));
+    const __m256 hit = _mm256_and_ps(entered_within_slack(enter, exit), lanes);
     mask = static_cast<uint32_t>(_mm256_movemask_ps(hit));
     return _mm256_blendv_ps(_mm256_set1_ps(std::numeric_limits<float>::quiet_NaN()), _mm256_castsi256_ps(enter), hit);
 }

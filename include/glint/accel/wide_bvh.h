@@ -180,12 +180,23 @@ inline constexpr float kWideBoxSlackFactor = 1.0f + 0x1p-20f;
 [[nodiscard]] inline int32_t distance_order(float t) { return std::bit_cast<int32_t>(t); }
 
 #if defined(__AVX2__)
+/// distance_order of eight distances.
+[[nodiscard]] inline __m256i distance_order(__m256 t) { return _mm256_castps_si256(t); }
+
+/// The lanes where a box is entered (`enter`) at most kWideBoxSlackUlps after it is left
+/// (`exit`), both as distance_order: the one rule of the single-ray and packet slab tests.
+[[nodiscard]] inline __m256 entered_within_slack(__m256i enter, __m256i exit) {
+    // enter <= exit + slack, as exit + slack + 1 > enter.
+    return _mm256_castsi256_ps(
+        _mm256_cmpgt_epi32(_mm256_add_epi32(exit, _mm256_set1_epi32(kWideBoxSlackUlps + 1)), enter));
+}
+
 /// The eight slab tests: the lanes whose boxes the ray enters within [tmin, tmax], and
 /// (in `enter`) where it enters each box.
 inline __m256 wide_slab_test(const WideNode& node, const WideRay& r, float tmin, float tmax, __m256& enter) {
     auto plane_t = [&](int axis, uint32_t plane) {
-        return _mm256_castps_si256(_mm256_fmsub_ps(_mm256_load_ps(node.planes[plane]), _mm256_set1_ps(r.inv_dir[axis]),
-                                                   _mm256_set1_ps(r.origin_inv_dir[axis])));
+        return distance_order(_mm256_fmsub_ps(_mm256_load_ps(node.planes[plane]), _mm256_set1_ps(r.inv_dir[axis]),
+                                              _mm256_set1_ps(r.origin_inv_dir[axis])));
     };
     const __m256i near_x = plane_t(0, r.near_plane[0]), far_x = plane_t(0, r.near_plane[0] ^ 1);
     const __m256i near_y = plane_t(1, r.near_plane[1]), far_y = plane_t(1, r.near_plane[1] ^ 1);
@@ -195,9 +206,7 @@ inline __m256 wide_slab_test(const WideNode& node, const WideRay& r, float tmin,
     const __m256i exit_order = _mm256_min_epi32(_mm256_min_epi32(far_x, far_y),
                                                 _mm256_min_epi32(far_z, _mm256_set1_epi32(distance_order(tmax))));
     enter = _mm256_castsi256_ps(enter_order);
-    // enter <= exit + slack, as exit + slack + 1 > enter.
-    return _mm256_castsi256_ps(
-        _mm256_cmpgt_epi32(_mm256_add_epi32(exit_order, _mm256_set1_epi32(kWideBoxSlackUlps + 1)), enter_order));
+    return entered_within_slack(enter_order, exit_order);
 }
 #endif
 
