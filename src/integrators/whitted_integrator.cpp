@@ -10,6 +10,8 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace glint {
@@ -58,38 +60,75 @@ Color WhittedIntegrator::Li(const RenderScene& scene, const Ray& ray, TraceConte
 void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const FirstHits& first,
                                             std::span<TraceContext> contexts, std::span<Color> radiance) const {
     const IorStack media(scene.ambient_ior());
-    // Lane k from its first hit: its surface interaction and shadow rays found already, or not.
-    auto shade_lane = [&](uint32_t k, SurfaceInteraction* si, const DeltaLightShadows* shadows) {
+    const auto count = uint32_t(first.rays.size());
+    // Lane k up to its hit: false if that is all (explain's lanes, which record their rays
+    // from the start, and misses).
+    auto start_lane = [&](uint32_t k) {
         TraceContext& context = contexts[k];
-        const Ray& ray = first.rays[k];
-        if (context.tree) {  // explain records its rays from the start
-            radiance[k] = Li(scene, ray, context);
-            return;
+        if (context.tree) {
+            radiance[k] = Li(scene, first.rays[k], context);
+            return false;
         }
         context.glossy_origin.pdf = 0.0f;
-        context.first_hit_shadows = shadows;
         ++context.rays;
-        if (!first.hit(k)) {
-            radiance[k] = radiance_from_hit<false>(scene, ray, nullptr, 0, media, -1, context);
-            return;
-        }
-        const Hit hit = first.hits.hit(k);
-        radiance[k] = si ? shade_hit<false, true>(scene, ray, hit, *si, 0, media, -1, context)
-                         : radiance_from_hit<false>(scene, ray, &hit, 0, media, -1, context);
-        context.first_hit_shadows = nullptr;
+        if (first.hit(k)) return true;
+        radiance[k] = radiance_from_hit<false>(scene, first.rays[k], nullptr, 0, media, -1, context);
+        return false;
     };
     if (!scene.packets_pay()) {
-        for (uint32_t k = 0; k < first.rays.size(); ++k) shade_lane(k, nullptr, nullptr);
+        for (uint32_t k = 0; k < count; ++k) {
+            if (!start_lane(k)) continue;
+            const Hit hit = first.hits.hit(k);
+            radiance[k] = radiance_from_hit<false>(scene, first.rays[k], &hit, 0, media, -1, contexts[k]);
+        }
         return;
     }
     // Every hit's point first, then the shadow rays of all toward each delta light as packets.
     std::array<SurfaceInteraction, RayPacket::kSize> interactions = per_lane([&](uint32_t k) {
-        if (k >= first.rays.size() || !first.hit(k)) return SurfaceInteraction();
+        if (k >= count || !first.hit(k)) return SurfaceInteraction();
         return scene.interaction(ray_to_hit(first.rays[k], first.hits.t[k]), first.hits.hit(k));
     });
     const std::array<DeltaLightShadows, RayPacket::kSize> shadows =
         trace_delta_light_shadows(scene, interactions, first.hit_lanes);
-    for (uint32_t k = 0; k < first.rays.size(); ++k) shade_lane(k, &interactions[k], &shadows[k]);
+    // Then each hit's shading up to the rays that leave it, and their mirror rays as one
+    // packet: a flat floor's reflections are as coherent as the camera rays that hit it.
+    // Hits on blended per-vertex materials are shaded whole, their mirror rays one by one.
+    std::array<std::optional<HitShading>, RayPacket::kSize> shading;
+    std::array<Color, RayPacket::kSize> kept;
+    std::array<Ray, RayPacket::kSize> mirror_rays;
+    RayPacket mirrors;
+    for (uint32_t k = 0; k < count; ++k) {
+        SurfaceInteraction& si = interactions[k];
+        if (!first.hit(k) || contexts[k].tree || si.blends_materials) continue;
+        kept[k] = begin_hit<false>(scene, first.rays[k], first.hits.hit(k), si, media, -1, contexts[k]);
+        const Material& m = scene.material(si.materials[0]);
+        apply_normal_map(si, m);
+        const HitShading& local = shading[k].emplace(si, m, first.rays[k], media);
+        if (max_depth_ > 0 && local.reflects()) {
+            mirror_rays[k] = local.reflected_ray(si);
+            mirrors.set(k, mirror_rays[k]);
+        }
+    }
+    PacketHits mirror_hits;
+    const uint32_t mirror_hit_lanes = mirrors.active ? scene.intersect_packet(mirrors, mirror_hits) : 0;
+    for (uint32_t k = 0; k < count; ++k) {
+        if (!start_lane(k)) continue;
+        TraceContext& context = contexts[k];
+        const Hit hit = first.hits.hit(k);
+        context.first_hit_shadows = &shadows[k];
+        if (!shading[k]) {
+            radiance[k] = shade_hit<false, true>(scene, first.rays[k], hit, interactions[k], 0, media, -1, context);
+        } else {
+            const Hit mirror_hit = mirror_hits.hit(k);
+            if (mirrors.active >> k & 1)
+                context.first_hit_mirror = {&mirror_rays[k], (mirror_hit_lanes >> k & 1) ? &mirror_hit : nullptr};
+            radiance[k] = kept[k] * shade_with<false, true>(scene, first.rays[k], hit.object, interactions[k],
+                                                            scene.material(interactions[k].materials[0]), *shading[k],
+                                                            0, media, context);
+            context.first_hit_mirror = {};
+        }
+        context.first_hit_shadows = nullptr;
+    }
 }
 
 Color WhittedIntegrator::trace(const RenderScene& scene, const Ray& ray, uint32_t depth, const IorStack& media,
@@ -117,11 +156,11 @@ Color WhittedIntegrator::glossy_background_weight(const RenderScene& scene, cons
     return background * power_heuristic(float(origin.samples) * origin.pdf, float(light_samples_) * light_pdf);
 }
 
-template <bool Record, bool KnownShadows>
+template <bool Record, bool TracedAhead>
 Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                       const Vec3& ng, uint32_t glossy_count, TraceContext& context) const {
     // Explain records the shadow rays it traces itself; only the render knows some already.
-    static_assert(!(Record && KnownShadows));
+    static_assert(!(Record && TracedAhead));
     const int32_t node = context.node;
     Color sum;
     // Not when the light gives nothing, or where it is behind the surface (or a glass has no
@@ -143,7 +182,7 @@ Color WhittedIntegrator::direct_light(const RenderScene& scene, const Bsdf& bsdf
         // Built where it is traced or recorded: a known answer needs no ray.
         auto shadow = [&] { return shadow_ray(si.p, through ? -ng : ng, ls, si.time); };
         std::optional<bool> known = answer;
-        if constexpr (KnownShadows)
+        if constexpr (TracedAhead)
             if (!known && !through) known = context.first_hit_shadows->occluded(light);
         const bool blocked = known     ? *known
                              : through ? scene.occluded(shadow(), DielectricShadows::Opaque)
@@ -279,9 +318,9 @@ Color WhittedIntegrator::radiance_from_hit(const RenderScene& scene, const Ray& 
     return shade_hit<Record>(scene, ray, *found, si, depth, media, node, context);
 }
 
-template <bool Record, bool KnownShadows>
-Color WhittedIntegrator::shade_hit(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfaceInteraction& si,
-                                   uint32_t depth, const IorStack& media, int32_t node, TraceContext& context) const {
+template <bool Record>
+Color WhittedIntegrator::begin_hit(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                                   const IorStack& media, int32_t node, TraceContext& context) const {
     // The ray's cone where it hit sets the texture footprint; the rays leaving here carry it
     // on, bounced (shade restores it for each). Only textures read it.
     if (scene.reads_texture_coordinates()) {
@@ -291,26 +330,40 @@ Color WhittedIntegrator::shade_hit(const RenderScene& scene, const Ray& ray, con
     }
     if constexpr (Record) context.tree->set_hit(node, hit.t, hit.object, si.materials[0], Vec3());
     // Inside an absorbing dielectric the radiance from the hit loses exp(−σa·d) on the way.
-    const Color kept = transmittance(scene, media, hit.t);
+    return transmittance(scene, media, hit.t);
+}
+
+template <bool Record, bool TracedAhead>
+Color WhittedIntegrator::shade_hit(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfaceInteraction& si,
+                                   uint32_t depth, const IorStack& media, int32_t node, TraceContext& context) const {
+    const Color kept = begin_hit<Record>(scene, ray, hit, si, media, node, context);
     // Only hits on per-vertex materials build a (blended) Material.
     if (si.blends_materials) {
         const Material blended = blended_material(scene, si);
         apply_normal_map(si, blended);
-        return kept * shade<Record, KnownShadows>(scene, ray, hit.object, si, blended, depth, media, context);
+        return kept * shade<Record, TracedAhead>(scene, ray, hit.object, si, blended, depth, media, context);
     }
     const Material& m = scene.material(si.materials[0]);
     apply_normal_map(si, m);
-    return kept * shade<Record, KnownShadows>(scene, ray, hit.object, si, m, depth, media, context);
+    return kept * shade<Record, TracedAhead>(scene, ray, hit.object, si, m, depth, media, context);
 }
 
-template <bool Record, bool KnownShadows>
+template <bool Record, bool TracedAhead>
 Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
                                const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const {
-    const ShadingPoint sp = shading_point(si, m, ray, media);
-    const MaterialAtHit at = material_at_hit(m, si);
+    return shade_with<Record, TracedAhead>(scene, ray, object, si, m, HitShading(si, m, ray, media), depth, media,
+                                           context);
+}
+
+template <bool Record, bool TracedAhead>
+Color WhittedIntegrator::shade_with(const RenderScene& scene, const Ray& ray, uint32_t object,
+                                    const SurfaceInteraction& si, const Material& m, const HitShading& local,
+                                    uint32_t depth, const IorStack& media, TraceContext& context) const {
+    const ShadingPoint& sp = local.sp;
+    const MaterialAtHit& at = local.at;
+    const Bsdf& bsdf = local.bsdf;
     // The cone every ray leaving here starts with (each child's trace moves context.cone on).
     const RayCone outgoing = context.cone;
-    const Bsdf bsdf(m, at, sp.n, sp.ng, sp.wo, sp.media);
     // The ray being shaded (context.node changes as the children are traced).
     const int32_t node = Record ? context.node : -1;
     if constexpr (Record) context.tree->set_normal(node, sp.n);
@@ -334,22 +387,29 @@ Color WhittedIntegrator::shade(const RenderScene& scene, const Ray& ray, uint32_
     // A clear dielectric (t = 1) takes no diffuse light (handout §6.2); its highlight and a
     // rough one's glossy lobes do.
     if (t < 1.0f || bsdf.has_smooth_lobes())
-        radiance += direct_light<Record, KnownShadows>(scene, bsdf, si, sp.ng, glossy_count, context);
+        radiance += direct_light<Record, TracedAhead>(scene, bsdf, si, sp.ng, glossy_count, context);
     if (depth >= max_depth_) return radiance;
 
     // The throughput from the camera to the children, for the tree only.
     Color weight(1.0f);
     if constexpr (Record) weight = context.tree->nodes()[std::size_t(node)].weight;
     const SpecularLobes& specular = bsdf.specular();
-    // A reflection that the shading normal bends below the true surface would start inside it.
-    if (!specular.reflection.is_black() && dot(specular.reflected, sp.ng) > 0.0f) {
+    if (local.reflects()) {
         if constexpr (Record) context.branch = {RayKind::Reflection, node, weight * specular.reflection};
         context.glossy_origin.pdf = 0.0f;
         context.cone = outgoing;
-        const Vec3 origin = offset_ray_origin(si.p, sp.ng);
-        radiance +=
-            specular.reflection * trace_ray<Record>(scene, Ray(origin, specular.reflected, 0.0f, kInfinity, si.time),
-                                                    depth + 1, media, context);
+        // A first hit's mirror ray may have been traced already, with its neighbours': the
+        // ray local.reflected_ray(si) makes, from this very `local` (never when recording).
+        TracedRay traced;
+        if constexpr (TracedAhead) traced = std::exchange(context.first_hit_mirror, TracedRay{});
+        Color mirrored;
+        if (traced.ray) {
+            ++context.rays;
+            mirrored = radiance_from_hit<false>(scene, *traced.ray, traced.hit, depth + 1, media, -1, context);
+        } else {
+            mirrored = trace_ray<Record>(scene, local.reflected_ray(si), depth + 1, media, context);
+        }
+        radiance += specular.reflection * mirrored;
     }
     if (specular.transmission > 0.0f && specular.refracted) {
         const IorStack inside = sp.entering ? media.entered(sp.medium, m.ior) : media.left(sp.medium);

@@ -25,6 +25,7 @@ class Camera;
 class DeltaLightShadows;
 class Filter;
 class RenderScene;
+struct Hit;
 struct PacketHits;
 
 struct RenderStats {
@@ -46,6 +47,13 @@ struct GlossyOrigin {
     uint32_t samples = 0;
     /// Its shading normal (the environment light's density depends on it).
     Vec3 normal;
+};
+
+/// A ray traced ahead of the shading that casts it, in a packet with its neighbours': the
+/// ray (null: none) and its closest hit (null: it found nothing).
+struct TracedRay {
+    const Ray* ray = nullptr;
+    const Hit* hit = nullptr;
 };
 
 /// Per-pixel-sample context handed to Li(): the sample generator, a ray counter and, when
@@ -77,6 +85,10 @@ struct TraceContext {
     /// its neighbours' (null otherwise); read only while shading that hit. Here for the
     /// reason `branch` is.
     const DeltaLightShadows* first_hit_shadows = nullptr;
+    /// Whitted: the mirror ray of the camera ray's first hit, already traced in a packet
+    /// with its neighbours' (none otherwise); taken by shade() at that hit. Here for the
+    /// reason `branch` is.
+    TracedRay first_hit_mirror = {};
 };
 
 /// The camera rays of neighbouring pixels of a row after the render found their closest

@@ -13,6 +13,7 @@ struct Material;
 struct Hit;
 struct SurfaceInteraction;
 struct ShadingPoint;
+struct HitShading;
 
 /// Direct light (ambient, Lambert, optional Blinn-Phong) with shadow rays, recursive
 /// mirror reflection, and refraction with Schlick Fresnel and total internal reflection,
@@ -37,7 +38,8 @@ public:
 
     [[nodiscard]] Color Li(const RenderScene& scene, const Ray& ray, TraceContext& context) const override;
     /// Li() for a packet of camera rays from their first hits; the shadow rays from those
-    /// hits toward each point, spot or directional light go as packets too.
+    /// hits toward each point, spot or directional light go as packets too, and so do their
+    /// mirror reflections.
     void Li_given_first_hits(const RenderScene& scene, const FirstHits& first, std::span<TraceContext> contexts,
                              std::span<Color> radiance) const override;
     [[nodiscard]] bool takes_first_hits() const override { return true; }
@@ -58,26 +60,44 @@ private:
     template <bool Record>
     [[nodiscard]] Color radiance_from_hit(const RenderScene& scene, const Ray& ray, const Hit* hit, uint32_t depth,
                                           const IorStack& media, int32_t node, TraceContext& context) const;
+    /// shade_hit()'s start, `si` on `hit` of `ray`: the ray's cone there (the texture
+    /// footprint), the hit in the tree when recording; returns what the radiance from the
+    /// hit keeps on its way back along the ray (absorption inside a dielectric).
+    template <bool Record>
+    [[gnu::always_inline]] [[nodiscard]] inline Color begin_hit(const RenderScene& scene, const Ray& ray,
+                                                                const Hit& hit, SurfaceInteraction& si,
+                                                                const IorStack& media, int32_t node,
+                                                                TraceContext& context) const;
     /// radiance_from_hit() for a hit, given its surface interaction `si` (which it completes:
     /// texture footprint, normal map). Inlined into radiance_from_hit(), which every ray
-    /// runs: called there, it made scenes without meshes render 1 % slower. KnownShadows:
+    /// runs: called there, it made scenes without meshes render 1 % slower. TracedAhead:
     /// the hit is a camera ray's first, whose shadow rays toward delta lights
-    /// context.first_hit_shadows holds (shade() and direct_light() pass it on); compiled
-    /// apart, so that other hits pay nothing for it.
-    template <bool Record, bool KnownShadows = false>
+    /// context.first_hit_shadows holds (shade() and direct_light() pass it on), and whose
+    /// mirror ray context.first_hit_mirror may hold; compiled apart, so that other hits pay
+    /// nothing for it.
+    template <bool Record, bool TracedAhead = false>
     [[gnu::always_inline]] [[nodiscard]] inline Color shade_hit(const RenderScene& scene, const Ray& ray,
                                                                 const Hit& hit, SurfaceInteraction& si, uint32_t depth,
                                                                 const IorStack& media, int32_t node,
                                                                 TraceContext& context) const;
     /// Radiance leaving the hit `si` on `object`, of material `m`, back along `ray`; when
     /// recording, context.node is the ray that hit.
-    template <bool Record, bool KnownShadows = false>
+    template <bool Record, bool TracedAhead = false>
     [[nodiscard]] Color shade(const RenderScene& scene, const Ray& ray, uint32_t object, const SurfaceInteraction& si,
                               const Material& m, uint32_t depth, const IorStack& media, TraceContext& context) const;
+    /// shade() where `local` is the hit's shading, worked out already (shade() works it out
+    /// and inlines this; Li_given_first_hits() works out a packet's before it traces their
+    /// mirror rays).
+    template <bool Record, bool TracedAhead = false>
+    [[gnu::always_inline]] [[nodiscard]] inline Color shade_with(const RenderScene& scene, const Ray& ray,
+                                                                 uint32_t object, const SurfaceInteraction& si,
+                                                                 const Material& m, const HitShading& local,
+                                                                 uint32_t depth, const IorStack& media,
+                                                                 TraceContext& context) const;
     /// Σ over lights of the BSDF's smooth and glossy lobes times the visible light
     /// (f·L·|cosθ|/pdf); with `glossy_count` glossy samples to be traced from here, the glossy
     /// part of area lights' samples is MIS-weighted against them.
-    template <bool Record, bool KnownShadows = false>
+    template <bool Record, bool TracedAhead = false>
     [[nodiscard]] Color direct_light(const RenderScene& scene, const Bsdf& bsdf, const SurfaceInteraction& si,
                                      const Vec3& ng, uint32_t glossy_count, TraceContext& context) const;
     /// The glossy lobes' light: `count` stratified samples, each traced at depth + 1 with
