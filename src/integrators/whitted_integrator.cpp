@@ -10,7 +10,8 @@
 
 #include <array>
 #include <cmath>
-#include <optional>
+#include <memory>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -39,6 +40,14 @@ float power_heuristic(float n_pdf, float other_n_pdf) {
     const float r = other_n_pdf / n_pdf;
     return 1.0f / (1.0f + r * r);
 }
+
+/// Room for a HitShading, left uninitialised: an array of std::optional<HitShading>, GCC 12
+/// zero-fills (2.4 KB for each packet of first hits, 0.6 % of the dragon scene's time).
+union UninitializedShading {
+    UninitializedShading() {}
+    HitShading value;
+};
+static_assert(std::is_trivially_destructible_v<HitShading>);
 
 /// `ray` as its closest-hit query left it: ending at its hit, `t`.
 Ray ray_to_hit(const Ray& ray, float t) {
@@ -93,7 +102,8 @@ void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const Firs
     // Then each hit's shading up to the rays that leave it, and their mirror rays as one
     // packet: a flat floor's reflections are as coherent as the camera rays that hit it.
     // Hits on blended per-vertex materials are shaded whole, their mirror rays one by one.
-    std::array<std::optional<HitShading>, RayPacket::kSize> shading;
+    std::array<UninitializedShading, RayPacket::kSize> shading;
+    uint32_t shaded_lanes = 0;
     std::array<Color, RayPacket::kSize> kept;
     std::array<Ray, RayPacket::kSize> mirror_rays;
     RayPacket mirrors;
@@ -103,7 +113,8 @@ void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const Firs
         kept[k] = begin_hit<false>(scene, first.rays[k], first.hits.hit(k), si, media, -1, contexts[k]);
         const Material& m = scene.material(si.materials[0]);
         apply_normal_map(si, m);
-        const HitShading& local = shading[k].emplace(si, m, first.rays[k], media);
+        const HitShading& local = *std::construct_at(&shading[k].value, si, m, first.rays[k], media);
+        shaded_lanes |= 1u << k;
         if (max_depth_ > 0 && local.reflects()) {
             mirror_rays[k] = local.reflected_ray(si);
             mirrors.set(k, mirror_rays[k]);
@@ -116,15 +127,15 @@ void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const Firs
         TraceContext& context = contexts[k];
         const Hit hit = first.hits.hit(k);
         context.first_hit_shadows = &shadows[k];
-        if (!shading[k]) {
+        if (!(shaded_lanes >> k & 1)) {
             radiance[k] = shade_hit<false, true>(scene, first.rays[k], hit, interactions[k], 0, media, -1, context);
         } else {
             const Hit mirror_hit = mirror_hits.hit(k);
             if (mirrors.active >> k & 1)
                 context.first_hit_mirror = {&mirror_rays[k], (mirror_hit_lanes >> k & 1) ? &mirror_hit : nullptr};
             radiance[k] = kept[k] * shade_with<false, true>(scene, first.rays[k], hit.object, interactions[k],
-                                                            scene.material(interactions[k].materials[0]), *shading[k],
-                                                            0, media, context);
+                                                            scene.material(interactions[k].materials[0]),
+                                                            shading[k].value, 0, media, context);
             context.first_hit_mirror = {};
         }
         context.first_hit_shadows = nullptr;

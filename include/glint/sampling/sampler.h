@@ -27,11 +27,14 @@ public:
 
     /// Begin sample `index` (0 … n²−1) of the pixel with linear index `pixel`.
     void start_pixel_sample(uint64_t pixel, uint32_t index) {
-        pixel_hash_ = hash_pixel(pixel);
         index_ = index;
         dimension_ = 0;
         // The pixel's PCG32 stream drew two numbers per sample in order: jump to this sample's
-        // pair unless it is the next one anyway.
+        // pair unless it is the next one anyway. The pixel's hash, only for another pixel.
+        if (pixel != hashed_pixel_) {
+            pixel_hash_ = hash_pixel(pixel);
+            hashed_pixel_ = pixel;
+        }
         if (pixel != stream_pixel_ || index != stream_next_index_) {
             stream_ = pcg32(seed_, pixel);
             stream_.advance(2ull * index);
@@ -65,7 +68,9 @@ private:
     uint64_t seed_hash_;
     /// n, and the n² strata: each divides every draw.
     Divisor by_n_, by_strata_;
+    /// hash_pixel(hashed_pixel_).
     uint64_t pixel_hash_;
+    uint64_t hashed_pixel_ = 0;
     uint32_t index_ = 0;
     uint32_t dimension_ = 0;
     Vec2 pixel_2d_;
