@@ -86,6 +86,7 @@ void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const Firs
     // Hits on blended per-vertex materials are shaded whole, their mirror rays one by one.
     std::array<UninitializedShading, RayPacket::kSize> shading;
     uint32_t shaded_lanes = 0;
+    std::array<const Material*, RayPacket::kSize> materials;
     std::array<Color, RayPacket::kSize> kept;
     std::array<Ray, RayPacket::kSize> mirror_rays;
     RayPacket mirrors;
@@ -93,7 +94,8 @@ void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const Firs
         SurfaceInteraction& si = interactions[k];
         if (!first.hit(k) || contexts[k].tree || si.blends_materials) continue;
         kept[k] = begin_hit<false>(scene, first.rays[k], first.hits.hit(k), si, media, -1, contexts[k]);
-        const Material& m = scene.material(si.materials[0]);
+        materials[k] = &scene.material(si.materials[0]);
+        const Material& m = *materials[k];
         apply_normal_map(si, m);
         const HitShading& local = *std::construct_at(&shading[k].value, si, m, first.rays[k], media);
         shaded_lanes |= 1u << k;
@@ -112,12 +114,13 @@ void WhittedIntegrator::Li_given_first_hits(const RenderScene& scene, const Firs
         if (!(shaded_lanes >> k & 1)) {
             radiance[k] = shade_hit<false, true>(scene, first.rays[k], hit, interactions[k], 0, media, -1, context);
         } else {
-            const Hit mirror_hit = mirror_hits.hit(k);
-            if (mirrors.active >> k & 1)
+            Hit mirror_hit;
+            if (mirrors.active >> k & 1) {
+                if (mirror_hit_lanes >> k & 1) mirror_hit = mirror_hits.hit(k);
                 context.first_hit_mirror = {&mirror_rays[k], (mirror_hit_lanes >> k & 1) ? &mirror_hit : nullptr};
+            }
             radiance[k] = kept[k] * shade_with<false, true>(scene, first.rays[k], hit.object, interactions[k],
-                                                            scene.material(interactions[k].materials[0]),
-                                                            shading[k].value, 0, media, context);
+                                                            *materials[k], shading[k].value, 0, media, context);
             context.first_hit_mirror = {};
         }
         context.first_hit_shadows = nullptr;
