@@ -4,9 +4,12 @@
 /// other processes hits both alike), and the build time and bytes per triangle. The sets
 /// "primary8" and "shadow8" are the same rays traced in packets of eight consecutive rays
 /// (TriangleBvh::intersect_packet/occluded_packet against rtcIntersect8/rtcOccluded8).
+/// Built with a tinybvh checkout (cmake -DGLINT_TINYBVH_DIR=...), it traces the single-ray
+/// sets with tinybvh's BVH8_CPU too, in the same alternation, and adds its Mrays/s.
 
 #include "bench_rays.h"
 #include "embree_scene.h"
+#include "tinybvh_scene.h"
 
 #include "glint/accel/ray_packet.h"
 #include "glint/assets/mesh_loader.h"
@@ -22,6 +25,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -122,6 +126,9 @@ struct Record {
     double glint = 0.0, embree = 0.0;  ///< Mrays/s, or build ms
     double glint_bytes = 0.0, embree_bytes = 0.0;
     Checksum glint_sum, embree_sum;
+    /// tinybvh's Mrays/s and hits, when this glint-bench has it (single-ray sets only).
+    std::optional<double> tinybvh;
+    Checksum tinybvh_sum;
     /// Glint's wide nodes visited and triangles tested per ray (single-ray sets only).
     double nodes_per_ray = 0.0, triangles_per_ray = 0.0;
 };
@@ -166,6 +173,7 @@ public:
         SecondaryRays secondary = secondary_rays(data_, primary_, hits);
         shadow_ = std::move(secondary.shadow);
         incoherent_ = std::move(secondary.incoherent);
+        if (TinyBvhScene::available()) tinybvh_ = std::make_unique<TinyBvhScene>(data_);
     }
 
     /// `set` is one of kRaySets.
@@ -205,13 +213,19 @@ public:
             else
                 embree_->intersect8(b, count, out);
         };
-        std::vector<double> glint_ms, embree_ms;
-        std::vector<PrimaryHit> glint_hits, embree_hits;
+        auto tinybvh_trace = [&](const BenchRay& b) -> PrimaryHit {
+            if (query == Query::Any) return tinybvh_->occluded(b) ? PrimaryHit{0.0f, 0} : PrimaryHit{0.0f, UINT32_MAX};
+            return tinybvh_->intersect(b);
+        };
+        const bool with_tinybvh = tinybvh_ && !set.packets;
+        std::vector<double> glint_ms, embree_ms, tinybvh_ms;
+        std::vector<PrimaryHit> glint_hits, embree_hits, tinybvh_hits;
         for (int rep = 0; rep < reps_; ++rep) {
             glint_ms.push_back(set.packets ? run_packets(rays, threads, glint_hits, glint_packet)
                                            : run(rays, threads, glint_hits, glint_trace));
             embree_ms.push_back(set.packets ? run_packets(rays, threads, embree_hits, embree_packet)
                                             : run(rays, threads, embree_hits, embree_trace));
+            if (with_tinybvh) tinybvh_ms.push_back(run(rays, threads, tinybvh_hits, tinybvh_trace));
         }
         const double mrays = double(rays.size()) * 1e-3;
         Record r;
@@ -222,6 +236,10 @@ public:
         r.embree = mrays / median(embree_ms);
         r.glint_sum = checksum(glint_hits);
         r.embree_sum = checksum(embree_hits);
+        if (with_tinybvh) {
+            r.tinybvh = mrays / median(tinybvh_ms);
+            r.tinybvh_sum = checksum(tinybvh_hits);
+        }
         if (!set.packets) {
             // Counted once, outside the timed runs, through the traversal the viewer's
             // heatmaps use (the same code with a counting policy).
@@ -254,6 +272,7 @@ private:
     MeshData data_;
     std::shared_ptr<TriangleMesh> glint_;
     std::unique_ptr<EmbreeScene> embree_;
+    std::unique_ptr<TinyBvhScene> tinybvh_;
     std::vector<BenchRay> primary_, shadow_, incoherent_;
 };
 
@@ -269,9 +288,12 @@ void print_json(const std::vector<Record>& records) {
             fmt::print(
                 R"(  {{"mesh": "{}", "rays": "{}", "threads": {}, "glint_mrays": {:.4f}, "embree_mrays": {:.4f}, )"
                 R"("glint_hits": {}, "embree_hits": {}, "glint_nodes_per_ray": {:.2f}, )"
-                R"("glint_triangles_per_ray": {:.2f}}})",
+                R"("glint_triangles_per_ray": {:.2f}{}}})",
                 r.mesh, r.rays, r.threads, r.glint, r.embree, r.glint_sum.hits, r.embree_sum.hits, r.nodes_per_ray,
-                r.triangles_per_ray);
+                r.triangles_per_ray,
+                r.tinybvh
+                    ? fmt::format(R"(, "tinybvh_mrays": {:.4f}, "tinybvh_hits": {})", *r.tinybvh, r.tinybvh_sum.hits)
+                    : std::string());
         fmt::print("{}\n", i + 1 < records.size() ? "," : "");
     }
     fmt::print("]\n");
@@ -323,6 +345,9 @@ int main(int argc, char** argv) {
                         "  (hits {} / {}, sum t {:.6g} / {:.6g})",
                         set, bench.ray_count(set), t, r.glint, r.embree, r.glint / r.embree, r.glint_sum.hits,
                         r.embree_sum.hits, r.glint_sum.t_sum, r.embree_sum.t_sum);
+                    if (r.tinybvh)
+                        fmt::print("  tinybvh {:.2f} Mrays/s, Glint/tinybvh {:.2f} (hits {})", *r.tinybvh,
+                                   r.glint / *r.tinybvh, r.tinybvh_sum.hits);
                     if (r.nodes_per_ray > 0.0)
                         fmt::print("  glint per ray: {:.1f} nodes, {:.1f} triangles", r.nodes_per_ray,
                                    r.triangles_per_ray);
