@@ -81,7 +81,6 @@ inline __m256 plus_product(__m256 a, __m256 b, __m256 c) {
 /// themselves as template arguments: those carry attributes a template argument drops.)
 struct FourLanes {
     using V = __m128;
-    static constexpr uint32_t kAllLanes = 0xf;
     static __m128 splat(float x) { return _mm_set1_ps(x); }
     static __m128 add(__m128 a, __m128 b) { return _mm_add_ps(a, b); }
     static __m128 sub(__m128 a, __m128 b) { return _mm_sub_ps(a, b); }
@@ -101,7 +100,6 @@ struct FourLanes {
 #if defined(__AVX__)
 struct EightLanes {
     using V = __m256;
-    static constexpr uint32_t kAllLanes = 0xff;
     static __m256 splat(float x) { return _mm256_set1_ps(x); }
     static __m256 add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }
     static __m256 sub(__m256 a, __m256 b) { return _mm256_sub_ps(a, b); }
@@ -175,10 +173,13 @@ inline uint32_t intersect_lanes(const Vertex& vertex, const LaneRay<L>& r, float
     const V v = edge(ax, ay, cx, cy);
     const V w = edge(bx, by, ax, ay);
     const V zero = L::splat(0.0f);
-    // A miss has edge functions of both signs; zeros count as inside.
+    // A miss has edge functions of both signs; zeros count as inside. No branch on this
+    // alone: for rays that leave a surface, whether some lane passes it (the triangle the ray
+    // starts on does) changes from leaf to leaf, and the mispredicted branch cost more than
+    // the depth test it skipped (single rays +2 to +11 %: docs/performance.md, "One branch in
+    // the leaf test").
     const V lowest = L::min(L::min(u, v), w), highest = L::max(L::max(u, v), w);
-    uint32_t mask = ~L::mask(L::both(L::less(lowest, zero), L::greater(highest, zero))) & L::kAllLanes;
-    if (mask == 0) return 0;
+    const V outside = L::both(L::less(lowest, zero), L::greater(highest, zero));
     const V det = L::add(L::add(u, v), w);
     const V t_scaled =
         plus_product(w, L::mul(r.sz, cz), plus_product(v, L::mul(r.sz, bz), L::mul(u, L::mul(r.sz, az))));
@@ -191,7 +192,7 @@ inline uint32_t intersect_lanes(const Vertex& vertex, const LaneRay<L>& r, float
     const V t_abs = L::flip(t_scaled, det_sign);
     const V in_range =
         L::both(L::greater(t_abs, L::mul(abs_det, L::splat(tmin))), L::less(t_abs, L::mul(abs_det, L::splat(tmax))));
-    mask &= L::mask(L::both(in_range, L::greater(abs_det, zero)));
+    const uint32_t mask = L::mask(L::and_not(outside, L::both(in_range, L::greater(abs_det, zero))));
     if (mask == 0) return 0;
     const V inv_det = L::reciprocal(det);
     L::store(t_out, L::mul(t_scaled, inv_det));
