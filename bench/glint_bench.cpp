@@ -101,6 +101,14 @@ double run_packets(const std::vector<BenchRay>& rays, int threads, std::vector<P
     return ms_since(start);
 }
 
+/// A reference engine's answer to one ray: its closest hit, or for an any-hit query prim 0
+/// when occluded and UINT32_MAX when free (the checksums count the former as hits).
+template <typename Engine>
+PrimaryHit query_one(const Engine& engine, Query query, const BenchRay& b) {
+    if (query == Query::Any) return engine.occluded(b) ? PrimaryHit{0.0f, 0} : PrimaryHit{0.0f, UINT32_MAX};
+    return engine.intersect(b);
+}
+
 Ray to_glint(const BenchRay& b) {
     return Ray(Vec3(b.org[0], b.org[1], b.org[2]), Vec3(b.dir[0], b.dir[1], b.dir[2]), b.tnear, b.tfar);
 }
@@ -189,10 +197,7 @@ public:
             Hit hit;
             return mesh.intersect(ray, hit) ? PrimaryHit{hit.t, hit.primitive} : PrimaryHit{0.0f, UINT32_MAX};
         };
-        auto embree_trace = [&](const BenchRay& b) -> PrimaryHit {
-            if (query == Query::Any) return embree_->occluded(b) ? PrimaryHit{0.0f, 0} : PrimaryHit{0.0f, UINT32_MAX};
-            return embree_->intersect(b);
-        };
+        auto embree_trace = [&](const BenchRay& b) { return query_one(*embree_, query, b); };
         const TriangleBvh& bvh = glint_->bvh();
         auto glint_packet = [&](const BenchRay* b, int count, PrimaryHit* out) {
             RayPacket packet;
@@ -213,10 +218,7 @@ public:
             else
                 embree_->intersect8(b, count, out);
         };
-        auto tinybvh_trace = [&](const BenchRay& b) -> PrimaryHit {
-            if (query == Query::Any) return tinybvh_->occluded(b) ? PrimaryHit{0.0f, 0} : PrimaryHit{0.0f, UINT32_MAX};
-            return tinybvh_->intersect(b);
-        };
+        auto tinybvh_trace = [&](const BenchRay& b) { return query_one(*tinybvh_, query, b); };
         const bool with_tinybvh = tinybvh_ && !set.packets;
         std::vector<double> glint_ms, embree_ms, tinybvh_ms;
         std::vector<PrimaryHit> glint_hits, embree_hits, tinybvh_hits;
