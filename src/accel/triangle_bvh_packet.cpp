@@ -26,7 +26,7 @@ struct PacketWatertightRay {
 
     /// WatertightRay's choices and arithmetic, eight lanes at a time: kz is the axis of
     /// the largest |direction| component (max_axis's tie rules), kx and ky follow it
-    /// cyclically and swap when the direction along kz is negative.
+    /// cyclically.
     explicit PacketWatertightRay(const RayPacket& packet) {
         const __m256 sign = _mm256_set1_ps(-0.0f);
         const __m256 d[3] = {_mm256_load_ps(packet.direction[0]), _mm256_load_ps(packet.direction[1]),
@@ -39,14 +39,12 @@ struct PacketWatertightRay {
         const __m256 kz_is_2 = _mm256_andnot_ps(_mm256_or_ps(kz_is_0, kz_is_1), _mm256_castsi256_ps(_mm256_set1_epi32(-1)));
         axis_is_0[2] = kz_is_0;
         axis_is_1[2] = kz_is_1;
-        const __m256 dz = pick_lanes(2, d);
-        const __m256 flip = _mm256_cmp_ps(dz, _mm256_setzero_ps(), _CMP_LT_OQ);
-        // Without the flip kx = kz + 1 and ky = kz + 2 (mod 3).
-        axis_is_0[0] = _mm256_blendv_ps(kz_is_2, kz_is_1, flip);
-        axis_is_1[0] = _mm256_blendv_ps(kz_is_0, kz_is_2, flip);
-        axis_is_0[1] = _mm256_blendv_ps(kz_is_1, kz_is_2, flip);
-        axis_is_1[1] = _mm256_blendv_ps(kz_is_2, kz_is_0, flip);
-        shear[2] = _mm256_div_ps(_mm256_set1_ps(1.0f), dz);
+        // kx = kz + 1 and ky = kz + 2 (mod 3).
+        axis_is_0[0] = kz_is_2;
+        axis_is_1[0] = kz_is_0;
+        axis_is_0[1] = kz_is_1;
+        axis_is_1[1] = kz_is_2;
+        shear[2] = _mm256_div_ps(_mm256_set1_ps(1.0f), pick_lanes(2, d));
         shear[0] = _mm256_mul_ps(pick_lanes(0, d), shear[2]);
         shear[1] = _mm256_mul_ps(pick_lanes(1, d), shear[2]);
         const __m256 o[3] = {_mm256_load_ps(packet.origin[0]), _mm256_load_ps(packet.origin[1]),

@@ -125,7 +125,7 @@ bool TriangleBvh::intersect(Ray& ray, Hit& hit, Filter&& accept, const Count& co
     };
 #if defined(__AVX__)
     if constexpr (AnyHit) {
-        const detail::LaneRay<detail::EightLanes> pair_ray(ray, block_ray.w);  // one set-up for both widths
+        const detail::LaneRay<detail::EightLanes> pair_ray(block_ray);  // one set-up for both widths
         auto intersect_pair = [&](uint32_t leaf, uint32_t other_leaf, Ray& r) {
             const TriangleBlock& a = blocks_[leaf];
             const TriangleBlock& b = blocks_[other_leaf];
