@@ -30,9 +30,10 @@ struct TriangleHit {
 
 /// a − b·c and a·b + c, rounded one way whatever the compiler's contraction: fused where the
 /// CPU has FMA, separately otherwise, as the SIMD tests round them (accel/triangle_block_test.h).
-/// Left to -ffp-contract, the scalar test's shear was fused at some call sites and not at
-/// others (a heightfield cell's four vertices came out differently), so a vertex shared by two
-/// triangles could be sheared to different bits, and the test depended on the axes' order.
+/// Left to -ffp-contract, the scalar test's shear was fused at some inlined call sites and not
+/// at others: a heightfield and the same triangles in a mesh gave a ray different bits, and the
+/// heightfield's result depended on the order of the axes (docs/performance.md, "The watertight
+/// set-up on SIMD registers").
 [[nodiscard]] inline float minus_product(float a, float b, float c) {
 #if defined(__FMA__)
     return std::fma(-b, c, a);
