@@ -14,6 +14,9 @@
 namespace glint {
 namespace {
 
+/// A material named "red" with every other field at its default, for texts that need one.
+constexpr std::string_view kRed = "[[materials]]\nname = \"red\"\n";
+
 LoadedScene load(std::string_view text) { return load_toml_scene_string(text, "test.toml", glint_test::kScenesDir); }
 
 /// The SceneError message for `text`, or a test failure if it loads.

@@ -39,7 +39,9 @@ struct PacketWatertightRay {
         const __m256 kz_is_2 = _mm256_andnot_ps(_mm256_or_ps(kz_is_0, kz_is_1), _mm256_castsi256_ps(_mm256_set1_epi32(-1)));
         axis_is_0[2] = kz_is_0;
         axis_is_1[2] = kz_is_1;
-        // kx = kz + 1 and ky = kz + 2 (mod 3).
+        // kx = kz + 1 and ky = kz + 2 (mod 3), WatertightRay's order.
+        static_assert(WatertightRay::kNextAxis[0] == 1 && WatertightRay::kNextAxis[1] == 2 &&
+                      WatertightRay::kNextAxis[2] == 0);
         axis_is_0[0] = kz_is_2;
         axis_is_1[0] = kz_is_0;
         axis_is_0[1] = kz_is_1;
@@ -79,64 +81,29 @@ struct PacketWatertightRay {
 };
 
 /// intersect_triangle_watertight of triangle `triangle` of `block` against the packet's eight
-/// rays, the same arithmetic in the same order as intersect_block (explicit fused products
-/// included, so both give a ray the same bits at any optimisation level); returns the lanes
-/// (rays) that hit within (tmin, tmax) and, through the out-parameters, t and the
+/// rays: the vertex sheared by each lane's ray, then the steps every SIMD form of the test
+/// shares (detail::hit_sheared_lanes), so a ray gets the same bits here as alone. Returns the
+/// lanes (rays) that hit within (tmin, tmax) and, through the out-parameters, t and the
 /// barycentrics of vertices 1 and 2 for them. Inlined into the loop over a block's
 /// triangles: called, its eight-lane results came back through memory and the packet's
 /// constants were read through pointers (packets +2 to +16 %, docs/performance.md).
-///
-/// Closest-hit packets (camera rays) leave as soon as no ray is inside the triangle's edges:
-/// that branch is predicted, and skips the depth test. Any-hit packets (shadow rays from a
-/// surface) decide in one mask at the end: whether some ray passes the edges changes from
-/// triangle to triangle there, and the mispredicted branch cost more than the depth test
-/// (shadow packets +5 to +19 %, camera packets -6 to -13 % without the branch:
-/// docs/performance.md, "One branch in the leaf test").
+/// Closest-hit packets (camera rays) leave as soon as no ray is inside the triangle's edges;
+/// any-hit packets (shadow rays from a surface) decide in one mask (hit_sheared_lanes says why).
 template <bool AnyHit, bool SharedAxes>
 [[gnu::always_inline]] inline uint32_t intersect_triangle_packet(const TriangleBlock& block, uint32_t triangle,
                                                                  const PacketWatertightRay& r, __m256 tmax,
                                                                  __m256& t_out, __m256& u_out, __m256& v_out) {
-    auto sheared = [&](int vertex, __m256& x, __m256& y, __m256& z) {
-        const float* p = &block.v[vertex][0][triangle];
-        z = _mm256_sub_ps(r.pick<SharedAxes>(2, p), r.origin[2]);
-        x = detail::minus_product(_mm256_sub_ps(r.pick<SharedAxes>(0, p), r.origin[0]), r.shear[0], z);
-        y = detail::minus_product(_mm256_sub_ps(r.pick<SharedAxes>(1, p), r.origin[1]), r.shear[1], z);
-    };
-    __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
-    sheared(0, ax, ay, az);
-    sheared(1, bx, by, bz);
-    sheared(2, cx, cy, cz);
-    auto edge = [](__m256 px, __m256 py, __m256 qx, __m256 qy) {
-        return _mm256_sub_ps(detail::opaque_float(_mm256_mul_ps(px, qy)), detail::opaque_float(_mm256_mul_ps(py, qx)));
-    };
-    const __m256 u = edge(cx, cy, bx, by);
-    const __m256 v = edge(ax, ay, cx, cy);
-    const __m256 w = edge(bx, by, ax, ay);
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 lowest = _mm256_min_ps(_mm256_min_ps(u, v), w), highest = _mm256_max_ps(_mm256_max_ps(u, v), w);
-    const __m256 outside =
-        _mm256_and_ps(_mm256_cmp_ps(lowest, zero, _CMP_LT_OQ), _mm256_cmp_ps(highest, zero, _CMP_GT_OQ));
-    if constexpr (!AnyHit) {
-        if (_mm256_movemask_ps(outside) == int(RayPacket::kAllLanes)) return 0;
+    detail::ShearedTriangle<detail::EightLanes> sheared;
+    for (int k = 0; k < 3; ++k) {
+        const float* p = &block.v[k][0][triangle];
+        sheared.z[k] = _mm256_sub_ps(r.pick<SharedAxes>(2, p), r.origin[2]);
+        sheared.x[k] =
+            detail::minus_product(_mm256_sub_ps(r.pick<SharedAxes>(0, p), r.origin[0]), r.shear[0], sheared.z[k]);
+        sheared.y[k] =
+            detail::minus_product(_mm256_sub_ps(r.pick<SharedAxes>(1, p), r.origin[1]), r.shear[1], sheared.z[k]);
     }
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(u, v), w);
-    const __m256 sz = r.shear[2];
-    const __m256 t_scaled =
-        detail::plus_product(w, _mm256_mul_ps(sz, cz),
-                             detail::plus_product(v, _mm256_mul_ps(sz, bz), _mm256_mul_ps(u, _mm256_mul_ps(sz, az))));
-    const __m256 sign_mask = _mm256_set1_ps(-0.0f);
-    const __m256 abs_det = _mm256_andnot_ps(sign_mask, det);
-    const __m256 t_abs = _mm256_xor_ps(t_scaled, _mm256_and_ps(det, sign_mask));
-    const __m256 in_range = _mm256_and_ps(_mm256_cmp_ps(t_abs, _mm256_mul_ps(abs_det, r.tmin), _CMP_GT_OQ),
-                                          _mm256_cmp_ps(t_abs, _mm256_mul_ps(abs_det, tmax), _CMP_LT_OQ));
-    const auto mask = static_cast<uint32_t>(_mm256_movemask_ps(
-        _mm256_andnot_ps(outside, _mm256_and_ps(in_range, _mm256_cmp_ps(abs_det, zero, _CMP_GT_OQ)))));
-    if (mask == 0) return 0;
-    const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
-    t_out = _mm256_mul_ps(t_scaled, inv_det);
-    u_out = _mm256_mul_ps(v, inv_det);
-    v_out = _mm256_mul_ps(w, inv_det);
-    return mask;
+    return detail::hit_sheared_lanes<detail::EightLanes, !AnyHit>(sheared, r.shear[2], r.tmin, tmax, t_out, u_out,
+                                                                  v_out);
 }
 
 /// The block's triangles against the packet's `lanes`. Closest hit: each hit shrinks its

@@ -10,6 +10,7 @@
 #include <immintrin.h>
 #endif
 
+#include <array>
 #include <cstdint>
 
 namespace glint {
@@ -92,6 +93,7 @@ struct FourLanes {
     static __m128 and_not(__m128 a, __m128 b) { return _mm_andnot_ps(a, b); }
     static __m128 flip(__m128 a, __m128 b) { return _mm_xor_ps(a, b); }
     static __m128 reciprocal(__m128 a) { return _mm_div_ps(_mm_set1_ps(1.0f), a); }
+    static constexpr uint32_t kAllLanes = 0xf;
     static uint32_t mask(__m128 a) { return static_cast<uint32_t>(_mm_movemask_ps(a)); }
     static void store(float* out, __m128 a) { _mm_storeu_ps(out, a); }
     template <int Lane>
@@ -115,6 +117,7 @@ struct EightLanes {
     static __m256 and_not(__m256 a, __m256 b) { return _mm256_andnot_ps(a, b); }
     static __m256 flip(__m256 a, __m256 b) { return _mm256_xor_ps(a, b); }
     static __m256 reciprocal(__m256 a) { return _mm256_div_ps(_mm256_set1_ps(1.0f), a); }
+    static constexpr uint32_t kAllLanes = 0xff;
     static uint32_t mask(__m256 a) { return static_cast<uint32_t>(_mm256_movemask_ps(a)); }
     static void store(float* out, __m256 a) { _mm256_storeu_ps(out, a); }
     template <int Lane>
@@ -123,6 +126,16 @@ struct EightLanes {
         return _mm256_set_m128(lane, lane);
     }
 };
+
+/// For each kz, the lanes that play the roles (kx, ky, kz, unused) in LaneRay's permutes.
+alignas(16) inline constexpr auto kRoleLanes = [] {
+    std::array<std::array<int32_t, 4>, 3> roles{};
+    for (int kz = 0; kz < 3; ++kz) {
+        const int kx = WatertightRay::kNextAxis[kz];
+        roles[kz] = {kx, WatertightRay::kNextAxis[kx], kz, 3};
+    }
+    return roles;
+}();
 #endif
 
 /// The watertight test's per-ray constants broadcast to L's lanes. It keeps no copy of the
@@ -143,11 +156,9 @@ struct LaneRay {
     /// shears (with kx, ky no longer swapped, single camera rays +2 to +3.5 %:
     /// docs/performance.md, "The watertight set-up on SIMD registers").
     explicit LaneRay(const Ray& ray) : kz(WatertightRay::dominant_axis(ray.direction)) {
-        // Lanes (kx, ky, kz) for kz = 0, 1, 2.
-        alignas(16) static constexpr int32_t kRoles[3][4] = {{1, 2, 0, 3}, {2, 0, 1, 3}, {0, 1, 2, 3}};
-        kx = kRoles[kz][0];
-        ky = kRoles[kz][1];
-        const __m128i roles = _mm_load_si128(reinterpret_cast<const __m128i*>(kRoles[kz]));
+        kx = WatertightRay::kNextAxis[kz];
+        ky = WatertightRay::kNextAxis[kx];
+        const __m128i roles = _mm_load_si128(reinterpret_cast<const __m128i*>(kRoleLanes[kz].data()));
         const __m128 d = _mm_permutevar_ps(_mm_setr_ps(ray.direction.x, ray.direction.y, ray.direction.z, 1.0f), roles);
         const __m128 o = _mm_permutevar_ps(_mm_setr_ps(ray.origin.x, ray.origin.y, ray.origin.z, 0.0f), roles);
         const __m128 shear_z = _mm_div_ps(_mm_set1_ps(1.0f), _mm_shuffle_ps(d, d, 0xaa));
@@ -186,44 +197,51 @@ struct LaneRay {
 };
 using BlockRay = LaneRay<FourLanes>;
 
-/// intersect_triangle_watertight on every lane of L at once, the same steps in the same order
-/// (products fused by minus_product/plus_product where the CPU has FMA): `vertex(k, axis)`
-/// loads component `axis` of vertex k of each lane's triangle. Returns the lanes that hit
-/// within (tmin, tmax) and writes their t and barycentrics.
-template <typename L, typename Vertex>
-inline uint32_t intersect_lanes(const Vertex& vertex, const LaneRay<L>& r, float tmin, float tmax, float* t_out,
-                                float* u_out, float* v_out) {
+/// A triangle's vertices translated to the ray origin and sheared (the ray along +z), on
+/// L's lanes: x[k], y[k], z[k] of vertex k, as the scalar test's ax, ay, az, bx, ...
+template <typename L>
+struct ShearedTriangle {
+    typename L::V x[3], y[3], z[3];
+};
+
+/// The rest of intersect_triangle_watertight once the vertices are sheared, on every lane of
+/// L: the edge functions, the inside test, the depth test against (tmin, tmax), and for the
+/// lanes that hit, t and the barycentrics of vertices 1 and 2. The one copy of these steps
+/// for every SIMD form of the test: a block's triangles against one ray (intersect_lanes)
+/// and one triangle against a packet's rays (triangle_bvh_packet.cpp), so both give a ray
+/// the same bits. `sz` is the ray's shear of z.
+///
+/// With LeaveWhenAllOutside, returns 0 as soon as no lane is inside the edges, skipping the
+/// depth test: that pays where the branch is predicted (closest-hit packets: eight coherent
+/// camera rays mostly miss a triangle together). Elsewhere the edge test's verdict joins the
+/// depth test's in one mask: for rays that leave a surface, whether some lane passes the
+/// edges (the triangle the ray starts on does) changes from leaf to leaf, and the
+/// mispredicted branch cost more than the depth test it skipped (single rays +2 to +11 %,
+/// shadow packets +5 to +19 %: docs/performance.md, "One branch in the leaf test").
+template <typename L, bool LeaveWhenAllOutside = false>
+[[gnu::always_inline]] inline uint32_t hit_sheared_lanes(const ShearedTriangle<L>& p, typename L::V sz,
+                                                         typename L::V tmin, typename L::V tmax, typename L::V& t_out,
+                                                         typename L::V& u_out, typename L::V& v_out) {
     using V = typename L::V;
-    // Sheared, translated vertices in float, as in the scalar test.
-    auto sheared = [&](int k, V& x, V& y, V& z) {
-        z = L::sub(vertex(k, r.kz), r.oz);
-        x = minus_product(L::sub(vertex(k, r.kx), r.ox), r.sx, z);
-        y = minus_product(L::sub(vertex(k, r.ky), r.oy), r.sy, z);
-    };
-    V ax, ay, az, bx, by, bz, cx, cy, cz;
-    sheared(0, ax, ay, az);
-    sheared(1, bx, by, bz);
-    sheared(2, cx, cy, cz);
     // Edge functions as differences of two rounded products; opaque_float keeps the
     // compiler from fusing them into an FMA, so the two triangles sharing an edge compute
     // exactly opposite values for it (the heart of the watertightness argument).
-    auto edge = [](V px, V py, V qx, V qy) {
-        return L::sub(opaque_float(L::mul(px, qy)), opaque_float(L::mul(py, qx)));
+    auto edge = [&](int i, int j) {
+        return L::sub(opaque_float(L::mul(p.x[i], p.y[j])), opaque_float(L::mul(p.y[i], p.x[j])));
     };
-    const V u = edge(cx, cy, bx, by);
-    const V v = edge(ax, ay, cx, cy);
-    const V w = edge(bx, by, ax, ay);
+    const V u = edge(2, 1);
+    const V v = edge(0, 2);
+    const V w = edge(1, 0);
     const V zero = L::splat(0.0f);
-    // A miss has edge functions of both signs; zeros count as inside. No branch on this
-    // alone: for rays that leave a surface, whether some lane passes it (the triangle the ray
-    // starts on does) changes from leaf to leaf, and the mispredicted branch cost more than
-    // the depth test it skipped (single rays +2 to +11 %: docs/performance.md, "One branch in
-    // the leaf test").
+    // A miss has edge functions of both signs; zeros count as inside.
     const V lowest = L::min(L::min(u, v), w), highest = L::max(L::max(u, v), w);
     const V outside = L::both(L::less(lowest, zero), L::greater(highest, zero));
+    if constexpr (LeaveWhenAllOutside) {
+        if (L::mask(outside) == L::kAllLanes) return 0;
+    }
     const V det = L::add(L::add(u, v), w);
     const V t_scaled =
-        plus_product(w, L::mul(r.sz, cz), plus_product(v, L::mul(r.sz, bz), L::mul(u, L::mul(r.sz, az))));
+        plus_product(w, L::mul(sz, p.z[2]), plus_product(v, L::mul(sz, p.z[1]), L::mul(u, L::mul(sz, p.z[0]))));
     // Compare t·|det| with the interval scaled by |det| and divide only for hits (the
     // paper's deferred division). det = 0 (zero-area triangles) fails the strict test,
     // unused (NaN) lanes fail every comparison.
@@ -231,14 +249,35 @@ inline uint32_t intersect_lanes(const Vertex& vertex, const LaneRay<L>& r, float
     const V det_sign = L::both(det, sign_mask);
     const V abs_det = L::and_not(sign_mask, det);
     const V t_abs = L::flip(t_scaled, det_sign);
-    const V in_range =
-        L::both(L::greater(t_abs, L::mul(abs_det, L::splat(tmin))), L::less(t_abs, L::mul(abs_det, L::splat(tmax))));
+    const V in_range = L::both(L::greater(t_abs, L::mul(abs_det, tmin)), L::less(t_abs, L::mul(abs_det, tmax)));
     const uint32_t mask = L::mask(L::and_not(outside, L::both(in_range, L::greater(abs_det, zero))));
     if (mask == 0) return 0;
     const V inv_det = L::reciprocal(det);
-    L::store(t_out, L::mul(t_scaled, inv_det));
-    L::store(u_out, L::mul(v, inv_det));
-    L::store(v_out, L::mul(w, inv_det));
+    t_out = L::mul(t_scaled, inv_det);
+    u_out = L::mul(v, inv_det);
+    v_out = L::mul(w, inv_det);
+    return mask;
+}
+
+/// intersect_triangle_watertight on every lane of L at once, the same steps in the same order
+/// (products fused by minus_product/plus_product where the CPU has FMA): `vertex(k, axis)`
+/// loads component `axis` of vertex k of each lane's triangle. Returns the lanes that hit
+/// within (tmin, tmax) and writes their t and barycentrics.
+template <typename L, typename Vertex>
+inline uint32_t intersect_lanes(const Vertex& vertex, const LaneRay<L>& r, float tmin, float tmax, float* t_out,
+                                float* u_out, float* v_out) {
+    ShearedTriangle<L> p;
+    for (int k = 0; k < 3; ++k) {
+        p.z[k] = L::sub(vertex(k, r.kz), r.oz);
+        p.x[k] = minus_product(L::sub(vertex(k, r.kx), r.ox), r.sx, p.z[k]);
+        p.y[k] = minus_product(L::sub(vertex(k, r.ky), r.oy), r.sy, p.z[k]);
+    }
+    typename L::V t, u, v;
+    const uint32_t mask = hit_sheared_lanes(p, r.sz, L::splat(tmin), L::splat(tmax), t, u, v);
+    if (mask == 0) return 0;
+    L::store(t_out, t);
+    L::store(u_out, u);
+    L::store(v_out, v);
     return mask;
 }
 #else

@@ -60,6 +60,10 @@ struct TriangleHit {
 /// rays, whose branches were always predicted, -3 to -6 %: docs/performance.md, "The
 /// watertight set-up without branches").
 struct WatertightRay {
+    /// The axis after each axis, cyclically: kx = kNextAxis[kz], ky = kNextAxis[kx]. Every
+    /// form of the test (the SIMD lanes' role table, the packets' lane masks) follows this
+    /// table, so that all of them shear a vertex the same way.
+    static constexpr int kNextAxis[3] = {1, 2, 0};
     int kx, ky, kz;
     float sx, sy, sz;
     /// The axis where |d| is largest (max_axis's tie rules), without branches.
@@ -73,9 +77,8 @@ struct WatertightRay {
         // direction its caller has just written field by field would wait for those stores.
         const float dir[3] = {opaque_float(d.x), opaque_float(d.y), opaque_float(d.z)};
         kz = dominant_axis(d);
-        static constexpr int kNext[3] = {1, 2, 0};
-        kx = kNext[kz];
-        ky = kNext[kx];
+        kx = kNextAxis[kz];
+        ky = kNextAxis[kx];
         // One division: the shear constants are per ray, shared by every triangle it meets,
         // so their rounding cannot open a gap between neighbours.
         sz = 1.0f / dir[kz];
