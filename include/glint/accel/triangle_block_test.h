@@ -1,7 +1,8 @@
 #pragma once
 /// \file The watertight triangle test on SIMD lanes: the four triangles of a leaf block at
 /// once (SSE), or the eight of two blocks (AVX), the steps of `intersect_triangle_watertight`
-/// in the same order, so that every lane finds what the scalar test finds.
+/// in the same order, so that every lane finds what the scalar test finds. Its steps after
+/// the shear (hit_sheared_lanes) also serve the packet test (triangle_bvh_packet.cpp).
 
 #include "glint/geometry/triangle.h"
 #include "glint/math/ray.h"
