@@ -293,9 +293,9 @@ void print_json(const std::vector<Record>& records) {
                 R"("glint_triangles_per_ray": {:.2f}{}}})",
                 r.mesh, r.rays, r.threads, r.glint, r.embree, r.glint_sum.hits, r.embree_sum.hits, r.nodes_per_ray,
                 r.triangles_per_ray,
-                r.tinybvh
-                    ? fmt::format(R"(, "tinybvh_mrays": {:.4f}, "tinybvh_hits": {})", *r.tinybvh, r.tinybvh_sum.hits)
-                    : std::string());
+                r.tinybvh ? fmt::format(R"(, "tinybvh_version": "{}", "tinybvh_mrays": {:.4f}, "tinybvh_hits": {})",
+                                        TinyBvhScene::version(), *r.tinybvh, r.tinybvh_sum.hits)
+                          : std::string());
         fmt::print("{}\n", i + 1 < records.size() ? "," : "");
     }
     fmt::print("]\n");
@@ -348,8 +348,8 @@ int main(int argc, char** argv) {
                         set, bench.ray_count(set), t, r.glint, r.embree, r.glint / r.embree, r.glint_sum.hits,
                         r.embree_sum.hits, r.glint_sum.t_sum, r.embree_sum.t_sum);
                     if (r.tinybvh)
-                        fmt::print("  tinybvh {:.2f} Mrays/s, Glint/tinybvh {:.2f} (hits {})", *r.tinybvh,
-                                   r.glint / *r.tinybvh, r.tinybvh_sum.hits);
+                        fmt::print("  tinybvh {} {:.2f} Mrays/s, Glint/tinybvh {:.2f} (hits {})",
+                                   TinyBvhScene::version(), *r.tinybvh, r.glint / *r.tinybvh, r.tinybvh_sum.hits);
                     if (r.nodes_per_ray > 0.0)
                         fmt::print("  glint per ray: {:.1f} nodes, {:.1f} triangles", r.nodes_per_ray,
                                    r.triangles_per_ray);

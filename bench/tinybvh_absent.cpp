@@ -9,6 +9,8 @@ struct TinyBvhScene::Impl {};
 
 bool TinyBvhScene::available() { return false; }
 
+std::string TinyBvhScene::version() { return {}; }
+
 TinyBvhScene::TinyBvhScene(const MeshData& /*mesh*/) {
     throw std::logic_error("glint-bench was built without tinybvh (set GLINT_TINYBVH_DIR)");
 }

@@ -3,6 +3,7 @@
 #define TINYBVH_IMPLEMENTATION
 #include <tiny_bvh.h>
 
+#include <string>
 #include <vector>
 
 namespace glint::bench {
@@ -14,6 +15,11 @@ struct TinyBvhScene::Impl {
 };
 
 bool TinyBvhScene::available() { return true; }
+
+std::string TinyBvhScene::version() {
+    return std::to_string(TINY_BVH_VERSION_MAJOR) + "." + std::to_string(TINY_BVH_VERSION_MINOR) + "." +
+           std::to_string(TINY_BVH_VERSION_SUB);
+}
 
 TinyBvhScene::TinyBvhScene(const MeshData& mesh) : impl_(std::make_unique<Impl>()) {
     impl_->vertices.reserve(mesh.indices.size());

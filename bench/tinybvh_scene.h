@@ -8,6 +8,7 @@
 #include "bench_rays.h"
 
 #include <memory>
+#include <string>
 
 namespace glint::bench {
 
@@ -19,6 +20,9 @@ class TinyBvhScene {
 public:
     /// Whether this glint-bench was built with tinybvh.
     [[nodiscard]] static bool available();
+    /// The tinybvh release measured ("1.9.0", from its TINY_BVH_VERSION_* macros): issue 13
+    /// names 1.6.7, and releases differ in build and kernels. Empty when not available().
+    [[nodiscard]] static std::string version();
 
     explicit TinyBvhScene(const MeshData& mesh);
     ~TinyBvhScene();
